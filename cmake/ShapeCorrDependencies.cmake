@@ -1,0 +1,25 @@
+# Finds ShapeCorr's dependencies and attaches them to a target. Used by the build tree and by the
+# installed package config, so a downstream find_package(ShapeCorr) gets exactly the same set.
+include(CMakeFindDependencyMacro)
+find_dependency(CGAL)
+find_dependency(Eigen3 3.3 NO_MODULE)
+find_dependency(spectra)
+find_dependency(Boost 1.66)
+if(NOT DEFINED SHAPECORR_USE_CHOLMOD)
+  set(SHAPECORR_USE_CHOLMOD OFF)
+endif()
+if(SHAPECORR_USE_CHOLMOD AND NOT SHAPECORR_CHOLMOD_LIBRARY)
+  find_path(SHAPECORR_CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+  find_library(SHAPECORR_CHOLMOD_LIBRARY cholmod)
+endif()
+find_package(Threads REQUIRED)
+
+function(shapecorr_link_dependencies target)
+  target_link_libraries(${target} INTERFACE CGAL::CGAL Eigen3::Eigen Spectra::Spectra Boost::boost
+                        Threads::Threads)
+  if(SHAPECORR_USE_CHOLMOD AND SHAPECORR_CHOLMOD_LIBRARY AND SHAPECORR_CHOLMOD_INCLUDE_DIR)
+    target_include_directories(${target} INTERFACE ${SHAPECORR_CHOLMOD_INCLUDE_DIR})
+    target_link_libraries(${target} INTERFACE ${SHAPECORR_CHOLMOD_LIBRARY})
+    target_compile_definitions(${target} INTERFACE SHAPECORR_HAS_CHOLMOD)
+  endif()
+endfunction()

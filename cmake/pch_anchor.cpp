@@ -1,0 +1,1 @@
+int shapecorr_pch_anchor() { return 0; }

@@ -1,0 +1,14 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file all.h
+/// Everything ShapeCorr offers (convenient, slow to compile: prefer the module headers).
+#ifndef SHAPECORR_ALL_H
+#define SHAPECORR_ALL_H
+#include <shapecorr/exceptions.h>
+#include <shapecorr/geodesics.h>
+#include <shapecorr/io.h>
+#include <shapecorr/mesh.h>
+#include <shapecorr/mesh/primitives.h>
+#include <shapecorr/parameters.h>
+#include <shapecorr/sampling.h>
+#endif

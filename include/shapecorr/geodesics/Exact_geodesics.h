@@ -1,0 +1,130 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Exact_geodesics.h
+#ifndef SHAPECORR_GEODESICS_EXACT_GEODESICS_H
+#define SHAPECORR_GEODESICS_EXACT_GEODESICS_H
+
+#include <shapecorr/internal/parallel.h>
+#include <shapecorr/mesh/internal/components.h>
+#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/parameters.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh_shortest_path.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Dense>
+
+#include <functional>
+#include <limits>
+#include <mutex>
+#include <vector>
+
+namespace shapecorr {
+
+/// \ingroup PkgShapeCorrGeodesics
+/// Exact geodesic distances (the reference): CGAL's `Surface_mesh_shortest_path` (Xin & Wang's
+/// improvement of Chen & Han), one sequence tree per query. Same interface as
+/// `Heat_method_geodesics` (a model of `GeodesicDistanceEngine`); batched queries run the sources
+/// in parallel, one CGAL object per thread.
+///
+/// Distances to vertices of components holding no source are `+infinity`.
+/// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, supported by CGAL's
+///         `Surface_mesh_shortest_path` (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, ...)
+template <typename TriangleMesh>
+class Exact_geodesics {
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh>::const_type Default_vpm;
+  typedef typename boost::property_traits<Default_vpm>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, TriangleMesh> Traits;
+  typedef decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>())) VIM;
+  typedef decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const TriangleMesh&>())) HIM;
+  typedef decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>())) FIM;
+  typedef CGAL::Surface_mesh_shortest_path<Traits, VIM, HIM, FIM, Default_vpm> Shortest_path;
+  typedef std::function<void(std::size_t, std::size_t)> Progress;
+
+  /// \param np `vertex_index_map` (0-based vertex indices), `number_of_threads` (0 = all cores).
+  /// Positions are the mesh's internal `CGAL::vertex_point` map.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Exact_geodesics(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+    : m_tm(tm), m_mesh(tm, np), m_vim(CGAL::get_initialized_vertex_index_map(tm)),
+      m_him(CGAL::get_initialized_halfedge_index_map(tm)), m_fim(CGAL::get_initialized_face_index_map(tm)) {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
+    m_components = internal::vertex_components(m_mesh.number_of_vertices(), m_mesh.arrays().F, m_component);
+  }
+
+  std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
+  std::size_t index(vertex_descriptor v) const { return m_mesh.index(v); }
+  vertex_descriptor vertex(std::size_t i) const { return m_mesh.vertex(i); }
+  const TriangleMesh& mesh() const { return m_tm; }
+  const internal::Triangle_arrays& arrays() const { return m_mesh.arrays(); }
+  unsigned number_of_threads() const { return m_threads; }
+
+  Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
+    if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "exact geodesics: no source vertex given");
+    Shortest_path sp(m_tm, m_vim, m_him, m_fim, get(CGAL::vertex_point, m_tm));
+    std::vector<char> has_source(m_components, 0);
+    for(std::size_t s : sources) {
+      check_source(s);
+      sp.add_source_point(vertex(s));
+      has_source[static_cast<std::size_t>(m_component[s])] = 1;
+    }
+    sp.build_sequence_tree();
+    const std::size_t n = number_of_vertices();
+    Eigen::VectorXd d(static_cast<Eigen::Index>(n));
+    for(std::size_t i = 0; i < n; ++i) {
+      d[static_cast<Eigen::Index>(i)] = has_source[static_cast<std::size_t>(m_component[i])]
+                                            ? CGAL::to_double(sp.shortest_distance_to_source_points(vertex(i)).first)
+                                            : std::numeric_limits<double>::infinity();
+    }
+    for(std::size_t s : sources) d[static_cast<Eigen::Index>(s)] = 0.0;
+    return d;
+  }
+  Eigen::VectorXd distances_from(std::size_t source) const { return distances_to_set({source}); }
+
+  /// As `Heat_method_geodesics::for_each_batch` (batches of one source each).
+  template <typename BlockFn>
+  void for_each_batch(const std::vector<std::size_t>& sources, BlockFn&& fn, const Progress& progress = {}) const {
+    std::mutex mtx;
+    std::size_t done = 0;
+    internal::parallel_for(sources.size(), m_threads, [&](std::size_t k, unsigned) {
+      Eigen::MatrixXd block = distances_from(sources[k]);
+      fn(k, std::size_t(1), block);
+      if(progress) {
+        std::lock_guard<std::mutex> lock(mtx);
+        progress(++done, sources.size());
+      }
+    });
+  }
+
+  template <typename VertexRange, typename VertexDistanceMap>
+  void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
+    std::vector<std::size_t> ids;
+    for(vertex_descriptor v : sources) ids.push_back(index(v));
+    const Eigen::VectorXd d = distances_to_set(ids);
+    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(distance_map, vertex(i), d[static_cast<Eigen::Index>(i)]);
+  }
+
+private:
+  void check_source(std::size_t s) const {
+    if(s >= number_of_vertices())
+      throw Invalid_input(Mesh_defect::invalid_argument, "source vertex " + std::to_string(s) + " out of range (mesh has " +
+                                                             std::to_string(number_of_vertices()) + " vertices)");
+  }
+  const TriangleMesh& m_tm;
+  internal::Indexed_mesh<TriangleMesh> m_mesh;
+  VIM m_vim;
+  HIM m_him;
+  FIM m_fim;
+  unsigned m_threads = 1;
+  std::size_t m_components = 0;
+  std::vector<int> m_component;
+};
+
+} // namespace shapecorr
+
+#endif

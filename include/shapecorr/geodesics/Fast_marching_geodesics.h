@@ -1,0 +1,140 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Fast_marching_geodesics.h
+#ifndef SHAPECORR_GEODESICS_FAST_MARCHING_GEODESICS_H
+#define SHAPECORR_GEODESICS_FAST_MARCHING_GEODESICS_H
+
+#include <shapecorr/geodesics/internal/fast_marching_engine.h>
+#include <shapecorr/internal/parallel.h>
+#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/parameters.h>
+
+#include <Eigen/Dense>
+
+#include <functional>
+#include <limits>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace shapecorr {
+
+/// \ingroup PkgShapeCorrGeodesics
+/// Approximate geodesic distances by fast marching (Kimmel & Sethian 1998) with virtual-source
+/// triangle updates, which are exact on developable (e.g. planar) patches. Its strength is the
+/// **radius-limited** query: `distances_within(source, R)` touches only the geodesic ball of radius
+/// R, so its cost is proportional to the ball, not to the mesh. Also a model of
+/// `GeodesicDistanceEngine` (full single- and multi-source distances, batched queries in parallel).
+///
+/// Accuracy: first order; on the TOSCA wolf (4344 vertices) the mean error against exact
+/// distances is about 0.5% of the geodesic diameter (see benchmark/README.md).
+/// Vertices not reachable from a source (other components) get `+infinity`.
+/// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
+template <typename TriangleMesh>
+class Fast_marching_geodesics {
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef std::function<void(std::size_t, std::size_t)> Progress;
+  /// (vertex index, distance) pairs, in increasing distance order.
+  typedef std::vector<std::pair<std::size_t, double>> Ball;
+
+  /// \param np `vertex_point_map`, `vertex_index_map`, `number_of_threads` (0 = all cores).
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Fast_marching_geodesics(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+    : m_mesh(tm, np), m_engine(m_mesh.arrays()) {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
+    m_workspaces.resize(m_threads);
+  }
+
+  std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
+  std::size_t index(vertex_descriptor v) const { return m_mesh.index(v); }
+  vertex_descriptor vertex(std::size_t i) const { return m_mesh.vertex(i); }
+  const TriangleMesh& mesh() const { return m_mesh.mesh(); }
+  const internal::Triangle_arrays& arrays() const { return m_mesh.arrays(); }
+  unsigned number_of_threads() const { return m_threads; }
+
+  /// Vertices at geodesic distance at most `radius` from `source` (indices), with their distances,
+  /// nearest first. Uses the calling thread's own workspace `ws` (see `Workspace`) when given.
+  /// \pre radius >= 0
+  void distances_within(std::size_t source, double radius, Ball& out) const {
+    std::lock_guard<std::mutex> lock(m_default_ws_mutex);
+    distances_within(source, radius, out, m_workspaces[0]);
+  }
+  /// Scratch state of one thread's queries; make one per thread to query concurrently.
+  typedef internal::Fast_marching_engine::Workspace Workspace;
+  void distances_within(std::size_t source, double radius, Ball& out, Workspace& ws) const {
+    if(!(radius >= 0))
+      throw Invalid_input(Mesh_defect::invalid_argument, "radius-limited geodesics: the radius must be >= 0");
+    out.clear();
+    m_engine.march({source}, radius, ws, [&](std::size_t v, double d) { out.emplace_back(v, d); });
+  }
+
+  Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
+    if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "fast marching: no source vertex given");
+    Workspace ws;
+    return full(sources, ws);
+  }
+  Eigen::VectorXd distances_from(std::size_t source) const { return distances_to_set({source}); }
+
+  /// As `Heat_method_geodesics::for_each_batch` (batches of one source, in parallel).
+  template <typename BlockFn>
+  void for_each_batch(const std::vector<std::size_t>& sources, BlockFn&& fn, const Progress& progress = {}) const {
+    std::mutex mtx;
+    std::size_t done = 0;
+    std::vector<Workspace> ws(m_threads);
+    internal::parallel_for(sources.size(), m_threads, [&](std::size_t k, unsigned tid) {
+      Eigen::MatrixXd block = full({sources[k]}, ws[tid]);
+      fn(k, std::size_t(1), block);
+      if(progress) {
+        std::lock_guard<std::mutex> lock(mtx);
+        progress(++done, sources.size());
+      }
+    });
+  }
+
+  template <typename VertexRange, typename VertexDistanceMap>
+  void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
+    std::vector<std::size_t> ids;
+    for(vertex_descriptor v : sources) ids.push_back(index(v));
+    const Eigen::VectorXd d = distances_to_set(ids);
+    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(distance_map, vertex(i), d[static_cast<Eigen::Index>(i)]);
+  }
+
+private:
+  Eigen::VectorXd full(const std::vector<std::size_t>& sources, Workspace& ws) const {
+    Eigen::VectorXd d = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(number_of_vertices()),
+                                                  std::numeric_limits<double>::infinity());
+    m_engine.march(sources, std::numeric_limits<double>::infinity(), ws,
+                   [&](std::size_t v, double dv) { d[static_cast<Eigen::Index>(v)] = dv; });
+    return d;
+  }
+
+  internal::Indexed_mesh<TriangleMesh> m_mesh;
+  internal::Fast_marching_engine m_engine;
+  unsigned m_threads = 1;
+  mutable std::vector<Workspace> m_workspaces;
+  mutable std::mutex m_default_ws_mutex;
+};
+
+/// \ingroup PkgShapeCorrGeodesics
+/// One-call radius-limited distances: writes into `out` the (vertex, distance) pairs of the
+/// geodesic ball of radius `radius` around `source`, nearest first. For many queries build one
+/// `Fast_marching_geodesics` and call `distances_within`.
+/// \param np `vertex_point_map`, `vertex_index_map`
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+void compute_geodesic_distances_within_radius(
+    const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor source, double radius,
+    std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>>& out,
+    const NamedParameters& np = CGAL::parameters::default_values()) {
+  Fast_marching_geodesics<TriangleMesh> engine(tm, np);
+  typename Fast_marching_geodesics<TriangleMesh>::Ball ball;
+  engine.distances_within(engine.index(source), radius, ball);
+  out.clear();
+  for(const auto& p : ball) out.emplace_back(engine.vertex(p.first), p.second);
+}
+
+} // namespace shapecorr
+
+#endif

@@ -1,0 +1,55 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Internal: a dependency-free parallel loop over work items with per-thread state.
+#ifndef SHAPECORR_INTERNAL_PARALLEL_H
+#define SHAPECORR_INTERNAL_PARALLEL_H
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace shapecorr {
+namespace internal {
+
+/// Number of worker threads for a request of `requested` (0 = all hardware threads).
+inline unsigned resolve_thread_count(unsigned requested) {
+  if(requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1u : hw;
+}
+
+/// Calls fn(item, thread_id) for item in [0, count) on up to `threads` threads (dynamic scheduling).
+/// The first exception thrown by fn is rethrown in the caller after all threads stopped.
+template <typename Fn>
+void parallel_for(std::size_t count, unsigned threads, Fn&& fn) {
+  threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(count, 1))));
+  if(threads == 1) {
+    for(std::size_t i = 0; i < count; ++i) fn(i, 0u);
+    return;
+  }
+  std::atomic<std::size_t> next(0);
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&](unsigned tid) {
+    try {
+      for(std::size_t i = next++; i < count; i = next++) fn(i, tid);
+    } catch(...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if(!error) error = std::current_exception();
+      next = count;
+    }
+  };
+  std::vector<std::thread> pool;
+  for(unsigned t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+  worker(0);
+  for(auto& th : pool) th.join();
+  if(error) std::rethrow_exception(error);
+}
+
+} // namespace internal
+} // namespace shapecorr
+
+#endif

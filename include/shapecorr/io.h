@@ -1,0 +1,9 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file io.h
+/// Module header: reading meshes with validation and repairs, writing coloured PLY.
+#ifndef SHAPECORR_IO_H
+#define SHAPECORR_IO_H
+#include <shapecorr/io/read_triangle_mesh.h>
+#include <shapecorr/io/write_colored_ply.h>
+#endif

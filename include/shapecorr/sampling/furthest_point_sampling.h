@@ -1,0 +1,114 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file furthest_point_sampling.h
+#ifndef SHAPECORR_SAMPLING_FURTHEST_POINT_SAMPLING_H
+#define SHAPECORR_SAMPLING_FURTHEST_POINT_SAMPLING_H
+
+#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
+
+#include <CGAL/Random.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace shapecorr {
+
+/// \ingroup PkgShapeCorrSampling
+/// Distance used by furthest point sampling (named parameter `distance_metric`).
+enum class Distance_metric { GEODESIC, EUCLIDEAN };
+
+namespace internal {
+
+struct Fps_result {
+  std::vector<std::size_t> samples;   // in selection order
+};
+
+/// `distances_from(i)` gives the distance of every vertex to vertex i (n values).
+template <typename DistancesFrom>
+Fps_result furthest_point_sampling_indices(std::size_t n, std::size_t count, std::size_t first, bool keep_first,
+                                           DistancesFrom&& distances_from) {
+  Fps_result r;
+  std::vector<double> mind(n, std::numeric_limits<double>::infinity());
+  const std::size_t total = keep_first ? count : count + 1; // the thesis drops the arbitrary start
+  std::size_t next = first;
+  std::vector<std::size_t> chosen;
+  std::vector<char> taken(n, 0);
+  while(chosen.size() < std::min(total, n)) {
+    chosen.push_back(next);
+    taken[next] = 1;
+    const Eigen::VectorXd d = distances_from(next);
+    for(std::size_t i = 0; i < n; ++i) mind[i] = std::min(mind[i], d[static_cast<Eigen::Index>(i)]);
+    // farthest untaken vertex; +infinity (another component) wins, ties to the lowest index
+    double best = -1;
+    std::size_t arg = n;
+    for(std::size_t i = 0; i < n; ++i)
+      if(!taken[i] && mind[i] > best) { best = mind[i]; arg = i; }
+    if(arg == n) break;
+    next = arg;
+  }
+  if(!keep_first && chosen.size() > count) chosen.erase(chosen.begin());
+  r.samples = chosen;
+  return r;
+}
+
+} // namespace internal
+
+/// \ingroup PkgShapeCorrSampling
+/// Furthest point sampling (thesis, chapter 5): start at an arbitrary vertex (drawn with the seed,
+/// or `first_vertex`), then repeatedly add the vertex farthest from the chosen set until there are
+/// `count + 1`, and drop the arbitrary first one (`keep_first_vertex(true)` keeps it and stops at
+/// `count`). Every step is one single-source distance query.
+/// \param count number of samples (at most the number of vertices)
+/// \param out output iterator receiving `vertex_descriptor`s in selection order
+/// \param np optional named parameters:
+/// | name | meaning | type | default |
+/// |---|---|---|---|
+/// | `distance_metric` | `GEODESIC` or `EUCLIDEAN` | `Distance_metric` | `GEODESIC` |
+/// | `random_seed` | seed of the start vertex | `unsigned` | 0 |
+/// | `first_vertex` | start vertex (overrides the seed) | `vertex_descriptor` | drawn |
+/// | `keep_first_vertex` | keep the start vertex as a sample | `bool` | `false` |
+/// | `geodesic_method`, `geodesic_engine`, engine parameters | distance backend | | heat method |
+/// Vertices of components not yet reached count as infinitely far, so every component gets samples.
+/// \returns the output iterator past the last sample
+template <typename TriangleMesh, typename OutputIterator, typename NamedParameters = parameters::Default_named_parameters>
+OutputIterator furthest_point_sampling(const TriangleMesh& tm, std::size_t count, OutputIterator out,
+                                       const NamedParameters& np = CGAL::parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const std::size_t n = num_vertices(tm);
+  if(n == 0) throw Invalid_input(Mesh_defect::empty_mesh, "furthest point sampling: the mesh has no vertex");
+  if(count == 0) return out;
+  const bool keep_first = choose_parameter(get_parameter(np, internal_np::keep_first_vertex), false);
+  const unsigned seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  const Distance_metric metric = choose_parameter(get_parameter(np, internal_np::distance_metric), Distance_metric::GEODESIC);
+  auto run = [&](const auto& engine, auto&& distances_from) {
+    std::size_t first;
+    auto given = get_parameter(np, internal_np::first_vertex);
+    if constexpr(!std::is_same<decltype(given), CGAL::internal_np::Param_not_found>::value) {
+      first = engine.index(static_cast<vertex_descriptor>(given));
+    } else {
+      CGAL::Random rng(seed);
+      first = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
+    }
+    const internal::Fps_result r = internal::furthest_point_sampling_indices(n, count, first, keep_first, distances_from);
+    for(std::size_t s : r.samples) *out++ = engine.vertex(s);
+    return 0;
+  };
+  if(metric == Distance_metric::EUCLIDEAN) {
+    const internal::Indexed_mesh<TriangleMesh> im(tm, np);
+    const auto& V = im.arrays().V;
+    run(im, [&](std::size_t s) -> Eigen::VectorXd { return (V.rowwise() - V.row(static_cast<Eigen::Index>(s))).rowwise().norm(); });
+  } else {
+    internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+      return run(engine, [&](std::size_t s) { return engine.distances_from(s); });
+    });
+  }
+  return out;
+}
+
+} // namespace shapecorr
+
+#endif

@@ -1,0 +1,129 @@
+// Reading files: formats, unreadable and bad content, documented repairs.
+#include "test_meshes.h"
+
+#include <shapecorr/io.h>
+#include <shapecorr/mesh/primitives.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <fstream>
+
+namespace {
+std::string write_file(const std::string& name, const std::string& content) {
+  const std::string path = "shapecorr_test_" + name;
+  std::ofstream(path) << content;
+  return path;
+}
+const char* tet_off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+
+template <typename Mesh>
+shapecorr::Mesh_defect read_defect(const std::string& path, shapecorr::Read_options opt = {}) {
+  Mesh m;
+  try {
+    shapecorr::read_triangle_mesh(path, m, opt);
+  } catch(const shapecorr::Invalid_input& e) {
+    CHECK(std::string(e.what()).find(path) == 0); // the message names the file
+    return e.defect();
+  }
+  FAIL("no error for " << path);
+  return shapecorr::Mesh_defect::invalid_argument;
+}
+} // namespace
+
+TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh, test::Polyhedron) {
+  using D = shapecorr::Mesh_defect;
+  SECTION("OFF, OBJ, PLY, STL round trip") {
+    TestType sphere;
+    shapecorr::make_icosphere(sphere, 2);
+    for(std::string ext : {"off", "obj", "ply", "stl"}) {
+      const std::string path = "shapecorr_test_sphere." + ext;
+      REQUIRE(CGAL::IO::write_polygon_mesh(path, sphere, CGAL::parameters::stream_precision(17)));
+      TestType back;
+      const auto r = shapecorr::read_triangle_mesh(path, back);
+      INFO(ext);
+      CHECK(num_vertices(back) == 162);
+      CHECK(num_faces(back) == 320);
+      CHECK(r.report.is_valid());
+      CHECK(r.repairs.empty());
+    }
+  }
+  SECTION("missing, empty and garbage files") {
+    CHECK(read_defect<TestType>("shapecorr_test_does_not_exist.off") == D::unreadable_file);
+    CHECK(read_defect<TestType>(write_file("empty.off", "")) == D::unreadable_file);
+    CHECK(read_defect<TestType>(write_file("garbage.off", "OFF\nthis is not a mesh\n")) == D::unreadable_file);
+    CHECK(read_defect<TestType>(write_file("unknown.xyz3", "1 2 3\n")) == D::unreadable_file);
+  }
+  SECTION("no faces") {
+    CHECK(read_defect<TestType>(write_file("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")) == D::empty_mesh);
+  }
+  SECTION("NaN coordinates") {
+    CHECK(read_defect<TestType>(write_file("nan.off", "OFF\n4 4 0\n0 0 0\nnan 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n")) ==
+          D::non_finite_coordinate);
+  }
+  SECTION("degenerate faces: an error, or removed on request") {
+    const std::string p = write_file("degenerate.off", "OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.5 0 0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 4 1\n");
+    CHECK(read_defect<TestType>(p) == D::degenerate_face);
+    shapecorr::Read_options opt;
+    opt.remove_degenerate_faces = true;
+    TestType m;
+    const auto r = shapecorr::read_triangle_mesh(p, m, opt);
+    CHECK(num_faces(m) == 4);
+    CHECK(num_vertices(m) == 4); // the vertex only the degenerate face used is gone too
+    CHECK(r.repairs.size() == 2);
+  }
+  SECTION("isolated vertices are removed and reported") {
+    TestType m;
+    const auto r = shapecorr::read_triangle_mesh(
+        write_file("isolated.off", "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n9 9 9\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"), m);
+    CHECK(num_vertices(m) == 4);
+    CHECK(r.report.isolated_vertices == 1);
+    REQUIRE(r.repairs.size() == 1);
+    CHECK(r.repairs[0] == "removed 1 isolated vertices");
+    shapecorr::Read_options strict;
+    strict.remove_isolated_vertices = false;
+    CHECK(read_defect<TestType>(write_file("isolated2.off", "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n9 9 9\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"),
+                                strict) == D::isolated_vertex);
+  }
+  SECTION("quads are triangulated") {
+    TestType m;
+    const auto r = shapecorr::read_triangle_mesh(
+        write_file("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                               "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"), m);
+    CHECK(num_faces(m) == 12);
+    CHECK(r.report.non_triangle_faces == 6);
+    CHECK(CGAL::is_triangle_mesh(m));
+  }
+  SECTION("non-manifold: an error, or split on request") {
+    const std::string p = write_file("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n");
+    CHECK(read_defect<TestType>(p) == D::non_manifold_vertex);
+    shapecorr::Read_options opt;
+    opt.repair_non_manifold = true;
+    TestType m;
+    shapecorr::read_triangle_mesh(p, m, opt);
+    CHECK(num_vertices(m) == 6);
+  }
+  SECTION("requirements: closed and connected") {
+    shapecorr::Read_options opt;
+    opt.requirements.closed = true;
+    CHECK(read_defect<TestType>(write_file("open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n"), opt) == D::boundary);
+    TestType ok;
+    CHECK_NOTHROW(shapecorr::read_triangle_mesh(write_file("tet.off", tet_off), ok, opt));
+  }
+}
+
+TEST_CASE("coloured PLY output", "[io]") {
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 1);
+  std::vector<double> values(m.number_of_vertices());
+  for(std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
+  shapecorr::write_colored_ply("shapecorr_test_colored.ply", m, values, {0});
+  test::Surface_mesh back;
+  REQUIRE(CGAL::IO::read_polygon_mesh("shapecorr_test_colored.ply", back));
+  CHECK(back.number_of_vertices() == m.number_of_vertices());
+  auto colors = back.property_map<test::Surface_mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  REQUIRE(colors.second);
+  CHECK(colors.first[test::Surface_mesh::Vertex_index(0)] == CGAL::IO::Color(230, 20, 20));
+  CHECK(colors.first[test::Surface_mesh::Vertex_index(41)] == CGAL::IO::Color(253, 231, 37)); // the maximum: yellow
+  CHECK_THROWS_AS(shapecorr::write_colored_ply("shapecorr_test_bad.ply", m, std::vector<double>(3)), shapecorr::Invalid_input);
+}

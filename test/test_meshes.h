@@ -1,0 +1,45 @@
+// Shared helpers of the test suite: the mesh types every generic algorithm is run over, and
+// access to ../shared/data (tests that need it skip when it is absent).
+#ifndef SHAPECORR_TEST_TEST_MESHES_H
+#define SHAPECORR_TEST_TEST_MESHES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+
+#include <Eigen/Core>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+/// ../shared/data (or $SHAPECORR_DATA); empty when absent.
+inline std::string data_dir() {
+  if(const char* env = std::getenv("SHAPECORR_DATA")) return env;
+  const std::string d = SHAPECORR_TEST_DATA_DIR;
+  std::ifstream probe(d + "/README.md");
+  return probe ? d : std::string();
+}
+
+/// Positions of a mesh in the order of its (initialized) vertex index map.
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertices_in_index_order(const Mesh& m) {
+  auto vim = CGAL::get_initialized_vertex_index_map(m);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vs(num_vertices(m));
+  for(auto v : vertices(m)) vs[get(vim, v)] = v;
+  return vs;
+}
+
+} // namespace test
+
+#endif
