@@ -146,12 +146,7 @@ int cmd_info(const Args& a) {
   const std::string path = a.positional[0];
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
-  {
-    std::ifstream probe(path);
-    if(!probe) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": cannot open the file");
-  }
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons) && points.empty())
-    throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": cannot parse");
+  shapecorr::read_polygon_soup_checked(path, points, polygons);
   const shapecorr::Mesh_report r = shapecorr::validate_polygon_soup(points, polygons);
   if(a.has("json")) {
     std::cout << "{\"file\": \"" << json_escape(path) << "\", \"vertices\": " << r.number_of_vertices

@@ -10,8 +10,10 @@
 #include <fstream>
 
 namespace {
+// file names carry the mesh type: ctest runs the instances of a template test in parallel
+thread_local std::string prefix = "shapecorr_test_";
 std::string write_file(const std::string& name, const std::string& content) {
-  const std::string path = "shapecorr_test_" + name;
+  const std::string path = prefix + name;
   std::ofstream(path) << content;
   return path;
 }
@@ -33,11 +35,12 @@ shapecorr::Mesh_defect read_defect(const std::string& path, shapecorr::Read_opti
 
 TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh, test::Polyhedron) {
   using D = shapecorr::Mesh_defect;
+  prefix = std::is_same<TestType, test::Surface_mesh>::value ? "shapecorr_test_sm_" : "shapecorr_test_poly_";
   SECTION("OFF, OBJ, PLY, STL round trip") {
     TestType sphere;
     shapecorr::make_icosphere(sphere, 2);
     for(std::string ext : {"off", "obj", "ply", "stl"}) {
-      const std::string path = "shapecorr_test_sphere." + ext;
+      const std::string path = prefix + "sphere." + ext;
       REQUIRE(CGAL::IO::write_polygon_mesh(path, sphere, CGAL::parameters::stream_precision(17)));
       TestType back;
       const auto r = shapecorr::read_triangle_mesh(path, back);
@@ -49,7 +52,7 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
     }
   }
   SECTION("missing, empty and garbage files") {
-    CHECK(read_defect<TestType>("shapecorr_test_does_not_exist.off") == D::unreadable_file);
+    CHECK(read_defect<TestType>(prefix + "does_not_exist.off") == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("empty.off", "")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("garbage.off", "OFF\nthis is not a mesh\n")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("unknown.xyz3", "1 2 3\n")) == D::unreadable_file);
@@ -57,19 +60,32 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
   SECTION("no faces") {
     CHECK(read_defect<TestType>(write_file("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")) == D::empty_mesh);
   }
-  SECTION("NaN coordinates") {
+  SECTION("NaN coordinates, in text (which CGAL's readers cannot parse) and in binary files") {
     CHECK(read_defect<TestType>(write_file("nan.off", "OFF\n4 4 0\n0 0 0\nnan 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n")) ==
           D::non_finite_coordinate);
+    CHECK(read_defect<TestType>(write_file("inf.obj", "v 0 0 0\nv -inf 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n")) ==
+          D::non_finite_coordinate);
+    test::Surface_mesh nan_mesh;
+    shapecorr::make_icosphere(nan_mesh, 1);
+    nan_mesh.point(test::Surface_mesh::Vertex_index(5)) = test::Point(0, std::nan(""), 0);
+    REQUIRE(CGAL::IO::write_polygon_mesh(prefix + "nan_binary.ply", nan_mesh, CGAL::parameters::use_binary_mode(true)));
+    CHECK(read_defect<TestType>(prefix + "nan_binary.ply") == D::non_finite_coordinate);
+  }
+  SECTION("a truncated file is unreadable, not half-read") {
+    CHECK(read_defect<TestType>(write_file("truncated.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1\n")) ==
+          D::unreadable_file);
   }
   SECTION("degenerate faces: an error, or removed on request") {
-    const std::string p = write_file("degenerate.off", "OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.5 0 0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 4 1\n");
+    // a closed tetrahedron plus a sliver (0, 4, 5) whose vertices lie on one line
+    const std::string p = write_file("degenerate.off",
+        "OFF\n6 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 0\n3 0 0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 4 5\n");
     CHECK(read_defect<TestType>(p) == D::degenerate_face);
     shapecorr::Read_options opt;
     opt.remove_degenerate_faces = true;
     TestType m;
     const auto r = shapecorr::read_triangle_mesh(p, m, opt);
     CHECK(num_faces(m) == 4);
-    CHECK(num_vertices(m) == 4); // the vertex only the degenerate face used is gone too
+    CHECK(num_vertices(m) == 4); // the vertices only the degenerate face used are gone too
     CHECK(r.repairs.size() == 2);
   }
   SECTION("isolated vertices are removed and reported") {
@@ -119,7 +135,8 @@ TEST_CASE("coloured PLY output", "[io]") {
   for(std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
   shapecorr::write_colored_ply("shapecorr_test_colored.ply", m, values, {0});
   test::Surface_mesh back;
-  REQUIRE(CGAL::IO::read_polygon_mesh("shapecorr_test_colored.ply", back));
+  std::ifstream in("shapecorr_test_colored.ply");
+  REQUIRE(CGAL::IO::read_PLY(in, back));
   CHECK(back.number_of_vertices() == m.number_of_vertices());
   auto colors = back.property_map<test::Surface_mesh::Vertex_index, CGAL::IO::Color>("v:color");
   REQUIRE(colors.second);

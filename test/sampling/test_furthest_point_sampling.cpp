@@ -39,12 +39,22 @@ TEMPLATE_TEST_CASE("furthest point sampling: seeded, distinct, spreading", "[sam
   REQUIRE(a.size() == 20);
   CHECK(a == b);
   CHECK(std::set<vd>(a.begin(), a.end()).size() == 20);
-  // covering radius: with 20 well-spread samples every point of the unit sphere is close to one
+  // the defining property of furthest point sampling (start kept): every vertex is closer to the
+  // sample set than any two samples are to each other (covering radius <= packing distance)
   shapecorr::Exact_geodesics<TestType> exact(m);
+  std::vector<vd> k;
+  shapecorr::furthest_point_sampling(m, 20, std::back_inserter(k), SP::random_seed(11u).keep_first_vertex(true).geodesic_engine(&exact));
   std::vector<std::size_t> ids;
-  for(vd v : a) ids.push_back(exact.index(v));
-  const Eigen::VectorXd cover = exact.distances_to_set(ids);
-  CHECK(cover.maxCoeff() < 0.75); // 20 caps of radius 0.75 cover more than 2.6 times the sphere
+  for(vd v : k) ids.push_back(exact.index(v));
+  const double cover = exact.distances_to_set(ids).maxCoeff();
+  double packing = 1e9;
+  for(std::size_t i = 0; i < ids.size(); ++i) {
+    const Eigen::VectorXd d = exact.distances_from(ids[i]);
+    for(std::size_t j = 0; j < ids.size(); ++j) if(j != i) packing = std::min(packing, d[static_cast<Eigen::Index>(ids[j])]);
+  }
+  INFO("covering radius " << cover << ", packing distance " << packing);
+  CHECK(cover <= packing + 1e-12);
+  CHECK(cover < 1.0);
   // asking for more samples than vertices gives every vertex once
   std::vector<vd> all;
   shapecorr::furthest_point_sampling(m, 10000, std::back_inserter(all));

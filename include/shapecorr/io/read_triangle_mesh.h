@@ -36,6 +36,61 @@ struct Read_result {
   std::vector<std::string> repairs;  ///< the repairs applied, in words
 };
 
+namespace internal {
+/// Line (1-based) of the first "nan" or "inf" number token of a text file, 0 if none.
+inline std::size_t first_non_finite_token_line(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::size_t no = 0;
+  while(std::getline(in, line)) {
+    ++no;
+    if(no == 1 && line.find("binary") != std::string::npos) return 0;
+    std::string low = line;
+    for(char& c : low) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for(const char* tok : {"nan", "inf"}) {
+      std::size_t pos = low.find(tok);
+      while(pos != std::string::npos) {
+        const bool left = pos == 0 || low[pos - 1] == ' ' || low[pos - 1] == '\t' || low[pos - 1] == '-' || low[pos - 1] == '+';
+        if(left) return no;
+        pos = low.find(tok, pos + 1);
+      }
+    }
+  }
+  return 0;
+}
+} // namespace internal
+
+/// \ingroup PkgShapeCorrIO
+/// Reads a polygon soup (OFF, OBJ, PLY, STL) with CGAL's readers, turning every failure into a
+/// typed error: `unreadable_file` (missing, empty, malformed; the message says so), or
+/// `non_finite_coordinate` for a text file that spells a coordinate "nan" or "inf" (which CGAL's
+/// text readers cannot parse). No validation of the content: see `validate_polygon_soup()`.
+template <typename Point>
+void read_polygon_soup_checked(const std::string& path, std::vector<Point>& points,
+                               std::vector<std::vector<std::size_t>>& polygons) {
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if(!probe) throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot open the file");
+    probe.seekg(0, std::ios::end);
+    if(probe.tellg() <= 0) throw Invalid_input(Mesh_defect::unreadable_file, path + ": the file is empty");
+  }
+  points.clear();
+  polygons.clear();
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+  } catch(const std::exception& e) {
+    throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot parse (" + e.what() + ")");
+  }
+  if(!ok) {
+    if(const std::size_t line = internal::first_non_finite_token_line(path))
+      throw Invalid_input(Mesh_defect::non_finite_coordinate, path + ": non-finite coordinate (nan/inf) on line " + std::to_string(line));
+    throw Invalid_input(Mesh_defect::unreadable_file,
+                        path + ": cannot parse (unknown extension or malformed content after " + std::to_string(points.size()) +
+                            " vertices and " + std::to_string(polygons.size()) + " faces; OFF, OBJ, PLY, STL are read)");
+  }
+}
+
 /// \ingroup PkgShapeCorrIO
 /// Reads OFF, OBJ, PLY or STL (`CGAL::IO::read_polygon_soup`), validates the content, applies the
 /// repairs `options` allow, and builds `tm`. Anything left wrong raises `Invalid_input` whose
@@ -47,28 +102,13 @@ template <typename TriangleMesh>
 Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const Read_options& options = Read_options()) {
   typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
   Read_result result;
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if(!probe) throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot open the file");
-    probe.seekg(0, std::ios::end);
-    if(probe.tellg() <= 0) throw Invalid_input(Mesh_defect::unreadable_file, path + ": the file is empty");
-  }
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-  } catch(const std::exception& e) {
-    throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot parse (" + e.what() + ")");
-  }
-  if(!ok && points.empty())
-    throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot parse (unknown extension or malformed content; OFF, OBJ, PLY, STL are read)");
+  read_polygon_soup_checked(path, points, polygons);
   result.report = validate_polygon_soup(points, polygons);
   const Mesh_report& r = result.report;
-  Mesh_report check = r;
   const std::string ctx = path;
-  if(r.is_empty()) require_valid(r, options.requirements, ctx);
-  if(r.non_finite_vertices) require_valid(r, options.requirements, ctx);
+  if(r.is_empty() || r.non_finite_vertices) require_valid(r, Mesh_requirements(), ctx);
 
   if(options.remove_degenerate_faces && r.degenerate_faces) {
     std::vector<std::vector<std::size_t>> kept;
@@ -76,7 +116,6 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
       if(!internal::is_degenerate_polygon(points, f, r.bbox_diagonal)) kept.push_back(f);
     result.repairs.push_back("removed " + std::to_string(polygons.size() - kept.size()) + " degenerate faces");
     polygons.swap(kept);
-    check.degenerate_faces = 0;
   }
   if(options.remove_isolated_vertices) {
     std::vector<char> used(points.size(), 0);
@@ -89,23 +128,21 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
       for(auto& f : polygons) for(auto& v : f) v = remap[v];
       points.swap(kept);
     }
-    check.isolated_vertices = 0;
   }
   if(options.repair_non_manifold && (r.non_manifold_edges || r.non_manifold_vertices)) {
     const std::size_t before = points.size();
     CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
     result.repairs.push_back("split non-manifold edges/vertices (" + std::to_string(points.size() - before) + " vertices duplicated)");
-    check.non_manifold_edges = check.non_manifold_vertices = 0;
   }
+  // what the repairs left (polygons are triangulated later, once they form a mesh)
+  Mesh_report check = validate_polygon_soup(points, polygons);
   if(options.triangulate) check.non_triangle_faces = 0;
-  check.number_of_vertices = points.size();
-  check.number_of_faces = polygons.size();
   require_valid(check, Mesh_requirements(), ctx);
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
     throw Invalid_input(Mesh_defect::non_manifold_edge, path + ": the faces do not form an oriented manifold surface");
   clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, tm);
-  if(options.triangulate && r.non_triangle_faces) {
+  if(options.triangulate && check.number_of_faces && r.non_triangle_faces) {
     CGAL::Polygon_mesh_processing::triangulate_faces(tm);
     result.repairs.push_back("triangulated " + std::to_string(r.non_triangle_faces) + " non-triangle faces");
   }
