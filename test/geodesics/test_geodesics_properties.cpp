@@ -187,3 +187,11 @@ TEST_CASE("one-call distances and diameter", "[geodesics]") {
     CHECK(shapecorr::geodesic_diameter(m, SP::geodesic_method(method)) == Approx(3.14159).epsilon(0.015));
   }
 }
+
+TEST_CASE("the sparse solver is a policy: SimplicialLLT gives the same distances", "[geodesics][policy]") {
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 3);
+  shapecorr::Heat_method_geodesics<test::Surface_mesh> ldlt(m);
+  shapecorr::Heat_method_geodesics<test::Surface_mesh, Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>> llt(m);
+  CHECK((ldlt.distances_from(4) - llt.distances_from(4)).cwiseAbs().maxCoeff() < 1e-8);
+}

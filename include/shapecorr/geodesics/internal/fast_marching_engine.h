@@ -52,6 +52,18 @@ public:
             (a.point(static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>((k + 1) % 3)])) -
              a.point(static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>((k + 2) % 3)]))).norm();
     }
+    // unfolding of corner k over its opposite edge: A = corner k+1 at (0,0), B = corner k+2 at
+    // (c,0), corner k at (cx, cy), cy > 0
+    m_unfold.resize(m);
+    for(std::size_t f = 0; f < m; ++f)
+      for(int k = 0; k < 3; ++k) {
+        const double c = m_len[f][static_cast<std::size_t>(k)];                 // |AB|
+        const double b = m_len[f][static_cast<std::size_t>((k + 2) % 3)];       // |A C|: opposite corner k+2
+        const double a = m_len[f][static_cast<std::size_t>((k + 1) % 3)];       // |B C|: opposite corner k+1
+        const double cx = c > 0 ? (b * b + c * c - a * a) / (2 * c) : 0.0;
+        const double cy2 = b * b - cx * cx;
+        m_unfold[f][static_cast<std::size_t>(k)] = {c, cx, cy2 > 0 ? std::sqrt(cy2) : 0.0};
+      }
     m_offset.assign(m_n + 1, 0);
     for(std::size_t v = 0; v < m_n; ++v) m_offset[v + 1] = m_offset[v] + deg[v + 1];
     m_incident.resize(static_cast<std::size_t>(m_offset[m_n]));
@@ -111,9 +123,13 @@ public:
           if(w.accepted[t]) continue;
           const std::size_t o = static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>(oc)]);
           double d = w.dist[v] + m_len[f][static_cast<std::size_t>(oc)]; // edge v-t is opposite corner oc
-          if(w.accepted[o])
-            d = std::min(d, triangle_update(w.dist[v], w.dist[o], m_len[f][static_cast<std::size_t>(tc)],
-                                            m_len[f][static_cast<std::size_t>(oc)], m_len[f][static_cast<std::size_t>(corner)]));
+          if(w.accepted[o]) {
+            // unfolding of t over edge (t+1, t+2); v is corner t+1 when s == 2, corner t+2 when s == 1
+            const auto& u = m_unfold[f][static_cast<std::size_t>(tc)];
+            const bool v_is_A = (s == 2);
+            const double dA = v_is_A ? w.dist[v] : w.dist[o], dB = v_is_A ? w.dist[o] : w.dist[v];
+            d = std::min(d, unfolded_update(dA, dB, u[0], u[1], u[2], std::min(d, w.dist[o] + m_len[f][static_cast<std::size_t>(corner)])));
+          }
           if(d < w.dist[t]) {
             if(std::isinf(w.dist[t])) w.touched.push_back(static_cast<int>(t));
             w.dist[t] = d;
@@ -125,6 +141,21 @@ public:
     // keep the heap's buffer for the next query
     while(!heap.empty()) heap.pop();
     w.heap_storage.clear();
+  }
+
+  /// Virtual-source update with C unfolded at (cx, cy) over A = (0,0), B = (c,0); returns
+  /// `fallback` where the ray from the virtual source misses the segment AB.
+  static double unfolded_update(double dA, double dB, double c, double cx, double cy, double fallback) {
+    if(!(c > 0) || !(cy > 0)) return fallback;
+    const double sx = (dA * dA - dB * dB + c * c) / (2 * c);
+    const double sy2 = dA * dA - sx * sx;
+    if(sy2 < 0) return fallback;
+    const double sy = -std::sqrt(sy2);
+    // the ray from the virtual source S = (sx, sy) to C must cross the segment AB (y = 0)
+    const double x = sx + (cx - sx) * (-sy / (cy - sy));
+    if(x < 0 || x > c) return fallback;
+    const double dx = cx - sx, dy = cy - sy;
+    return std::min(fallback, std::sqrt(dx * dx + dy * dy));
   }
 
   /// Distance at C from A, B with distances dA, dB; c = |AB|, b = |AC|, a = |BC|.
@@ -149,7 +180,8 @@ public:
 private:
   std::size_t m_n;
   std::vector<std::array<int, 3>> m_faces;
-  std::vector<std::array<double, 3>> m_len;
+  std::vector<std::array<double, 3>> m_len;                  // length of the edge opposite each corner
+  std::vector<std::array<std::array<double, 3>, 3>> m_unfold;  // per corner: c, cx, cy (see constructor)
   std::vector<int> m_offset;
   std::vector<int> m_incident;  // corner ids 3f+k around each vertex
 };

@@ -183,7 +183,12 @@ private:
       for(std::size_t f = 0; f < m; ++f) {
         const auto& F = m_faces[f];
         const auto& g = m_grad[f];
-        const Eigen::Vector2d grad = uc[F[0]] * g[0] + uc[F[1]] * g[1] + uc[F[2]] * g[2];
+        // far from the source the heat is tiny (1e-300 is common): rescale per face before the
+        // gradient so its squared norm does not underflow; only the direction is used
+        const double scale = std::max(std::abs(uc[F[0]]), std::max(std::abs(uc[F[1]]), std::abs(uc[F[2]])));
+        if(!(scale > 0)) continue;
+        const double s = 1.0 / scale;
+        const Eigen::Vector2d grad = (s * std::abs(uc[F[0]])) * g[0] + (s * std::abs(uc[F[1]])) * g[1] + (s * std::abs(uc[F[2]])) * g[2];
         const double nrm = grad.norm();
         if(!(nrm > 0)) continue;
         const Eigen::Vector2d X = -grad / nrm;

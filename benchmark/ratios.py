@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+"""Prints the figures of benchmark/README.md from a bench_geodesics JSON file: times, errors and
+ratios against the references measured in the same run."""
+import json
+import sys
+
+runs = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+ctx = json.load(open(sys.argv[1]))["context"]
+def ms(b):
+    t = b["real_time"]
+    return {"ns": t / 1e6, "us": t / 1e3, "ms": t, "s": t * 1e3}[b["time_unit"]]
+n = int(next(iter(runs.values()))["vertices"])
+print(f"mesh: {n} vertices, {ctx.get('num_cpus')} cpus")
+ref = runs.get("BM_Reference_CGAL_HeatMethod_PerSource/iterations:1/real_time")
+cgal_all = None
+if ref:
+    per = ms(ref) / ref["sources"]
+    threads = ctx.get("num_cpus", 1)
+    cgal_loop = per * n              # a plain loop over all sources, as a user writes it
+    cgal_all = cgal_loop / threads   # the same loop perfectly parallelized (one CGAL object per thread)
+    print(f"CGAL Heat_method_3: {per:.2f} ms/source -> all pairs {cgal_loop/1e3:.2f} s looping, "
+          f"{cgal_all/1e3:.2f} s if split over {threads} threads (mean |err| {ref['mean_abs_err_pct_D']:.3f}% D)")
+for name, b in runs.items():
+    if name.startswith("BM_AllPairs"):
+        line = f"{name}: {ms(b)/1e3:.3f} s, mean |err| vs exact {b['mean_abs_err_pct_D']:.3f}% D"
+        if cgal_all:
+            line += (f", {cgal_loop / ms(b):.1f}x faster than looping CGAL's heat method"
+                     f" ({cgal_all / ms(b):.1f}x against the loop split over all cores)")
+        print(line)
+r = runs.get("BM_RadiusLimited_PerSource")
+if r:
+    print(f"radius-limited r=0.15D: {ms(r):.4f} ms/source, {r['mean_ball_vertices']:.0f} vertices per ball")
+a = runs.get("BM_LocalAgd_AllVertices/iterations:3/real_time")
+if a:
+    print(f"local agd r=0.15D, all vertices: {ms(a)/1e3:.3f} s")
+e = runs.get("BM_Exact_SingleSource/iterations:10")
+h = runs.get("BM_Heat_SingleSource")
+if e and h:
+    print(f"exact single source: {ms(e):.1f} ms; heat single source: {ms(h):.2f} ms; ratio exact/heat {ms(e)/ms(h):.0f}x")
