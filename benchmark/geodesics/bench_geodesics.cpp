@@ -115,9 +115,6 @@ void BM_Reference_CGAL_HeatMethod_PerSource(benchmark::State& state) {
     }
   }
   state.counters["sources"] = sources;
-  state.counters["per_source_ms"] = benchmark::Counter(static_cast<double>(sources) * state.iterations(),
-                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["per_source_ms"] = state.counters["per_source_ms"] * 1000.0;
   state.counters["mean_abs_err_pct_D"] = f.mean_error_pct([&](std::size_t s) {
     hm.clear_sources();
     hm.add_source(vertex_descriptor(static_cast<Mesh::size_type>(s)));

@@ -44,7 +44,7 @@ public:
   /// | `time_step_factor` | m in t = m h^2, h the mean edge length | `double` | 1 |
   /// | `use_intrinsic_delaunay` | run on the intrinsic Delaunay triangulation (robust to obtuse / poor triangles) | `bool` | `false` |
   /// | `number_of_threads` | worker threads, 0 = all cores | `unsigned` | 0 |
-  /// | `batch_size` | sources per multi right-hand-side solve | `std::size_t` | 64 |
+  /// | `batch_size` | sources per multi right-hand-side solve | `std::size_t` | 8 |
   /// \throws Invalid_input for an empty mesh, non-triangle faces or non-finite coordinates
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Heat_method_geodesics(const TriangleMesh& tm,
@@ -56,7 +56,7 @@ public:
     opt.time_step_factor = choose_parameter(get_parameter(np, internal_np::time_step_factor), 1.0);
     opt.intrinsic_delaunay = choose_parameter(get_parameter(np, internal_np::use_intrinsic_delaunay), false);
     opt.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u);
-    opt.batch_size = choose_parameter(get_parameter(np, internal_np::batch_size), std::size_t(64));
+    opt.batch_size = choose_parameter(get_parameter(np, internal_np::batch_size), std::size_t(8));
     if(!(opt.time_step_factor > 0))
       throw Invalid_input(Mesh_defect::invalid_argument, "heat method: time_step_factor must be positive");
     m_engine = std::make_unique<internal::Heat_method_engine<SparseSolver>>(m_mesh.arrays(), opt);
