@@ -195,3 +195,20 @@ TEST_CASE("the sparse solver is a policy: SimplicialLLT gives the same distances
   shapecorr::Heat_method_geodesics<test::Surface_mesh, Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>> llt(m);
   CHECK((ldlt.distances_from(4) - llt.distances_from(4)).cwiseAbs().maxCoeff() < 1e-8);
 }
+
+TEST_CASE("every engine reads positions through the vertex_point_map parameter", "[geodesics][vpm]") {
+  // the mesh stores a unit sphere; the point map given scales it by 2: distances double
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 3);
+  auto scaled = m.add_property_map<test::Surface_mesh::Vertex_index, test::Point>("v:scaled").first;
+  for(auto v : vertices(m)) scaled[v] = CGAL::ORIGIN + 2.0 * (m.point(v) - CGAL::ORIGIN);
+  const auto np = SP::vertex_point_map(scaled);
+  for(auto method : {shapecorr::Geodesic_method::HEAT, shapecorr::Geodesic_method::EXACT, shapecorr::Geodesic_method::FAST_MARCHING}) {
+    auto d = m.add_property_map<test::Surface_mesh::Vertex_index, double>("v:d").first;
+    shapecorr::compute_geodesic_distances(m, test::Surface_mesh::Vertex_index(0), d, SP::geodesic_method(method).vertex_point_map(scaled));
+    CHECK(d[test::Surface_mesh::Vertex_index(3)] == Approx(2 * 3.14159).epsilon(0.03));
+    m.remove_property_map(d);
+  }
+  shapecorr::Exact_geodesics<test::Surface_mesh, decltype(scaled)> exact(m, np);
+  CHECK(exact.distances_from(0)[3] == Approx(2 * 3.14159).epsilon(0.01));
+}

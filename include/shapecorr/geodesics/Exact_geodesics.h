@@ -31,26 +31,31 @@ namespace shapecorr {
 /// Distances to vertices of components holding no source are `+infinity`.
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, supported by CGAL's
 ///         `Surface_mesh_shortest_path` (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, ...)
-template <typename TriangleMesh>
+/// \tparam VertexPointMap the type of the `vertex_point_map` named parameter (default: the
+///         mesh's internal point map)
+template <typename TriangleMesh,
+          typename VertexPointMap = typename CGAL::GetVertexPointMap<TriangleMesh>::const_type>
 class Exact_geodesics {
 public:
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename CGAL::GetVertexPointMap<TriangleMesh>::const_type Default_vpm;
-  typedef typename boost::property_traits<Default_vpm>::value_type Point;
+  typedef VertexPointMap Vpm;
+  typedef typename boost::property_traits<Vpm>::value_type Point;
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, TriangleMesh> Traits;
   typedef decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>())) VIM;
   typedef decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const TriangleMesh&>())) HIM;
   typedef decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>())) FIM;
-  typedef CGAL::Surface_mesh_shortest_path<Traits, VIM, HIM, FIM, Default_vpm> Shortest_path;
+  typedef CGAL::Surface_mesh_shortest_path<Traits, VIM, HIM, FIM, Vpm> Shortest_path;
   typedef std::function<void(std::size_t, std::size_t)> Progress;
 
-  /// \param np `vertex_index_map` (0-based vertex indices), `number_of_threads` (0 = all cores).
-  /// Positions are the mesh's internal `CGAL::vertex_point` map.
+  /// \param np `vertex_point_map` (of type `VertexPointMap`), `vertex_index_map` (0-based vertex
+  /// indices), `number_of_threads` (0 = all cores).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Exact_geodesics(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
     : m_tm(tm), m_mesh(tm, np), m_vim(CGAL::get_initialized_vertex_index_map(tm)),
-      m_him(CGAL::get_initialized_halfedge_index_map(tm)), m_fim(CGAL::get_initialized_face_index_map(tm)) {
+      m_him(CGAL::get_initialized_halfedge_index_map(tm)), m_fim(CGAL::get_initialized_face_index_map(tm)),
+      m_vpm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                         get_const_property_map(CGAL::vertex_point, tm))) {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
@@ -66,7 +71,7 @@ public:
 
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
     if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "exact geodesics: no source vertex given");
-    Shortest_path sp(m_tm, m_vim, m_him, m_fim, get(CGAL::vertex_point, m_tm));
+    Shortest_path sp(m_tm, m_vim, m_him, m_fim, m_vpm);
     std::vector<char> has_source(m_components, 0);
     for(std::size_t s : sources) {
       check_source(s);
@@ -120,6 +125,7 @@ private:
   VIM m_vim;
   HIM m_him;
   FIM m_fim;
+  Vpm m_vpm;
   unsigned m_threads = 1;
   std::size_t m_components = 0;
   std::vector<int> m_component;

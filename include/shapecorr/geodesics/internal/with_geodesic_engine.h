@@ -28,7 +28,7 @@ decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameter
   } else {
     const Geodesic_method method = choose_parameter(get_parameter(np, internal_np::geodesic_method), Geodesic_method::HEAT);
     if(method == Geodesic_method::EXACT) {
-      Exact_geodesics<TriangleMesh> engine(tm, np);
+      Exact_geodesics<TriangleMesh, typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type> engine(tm, np);
       return fn(engine);
     }
     if(method == Geodesic_method::FAST_MARCHING) {
