@@ -79,13 +79,15 @@ Geodesic_distance_matrix all_pairs_from_engine(const GeodesicDistanceEngine& eng
 
 /// \ingroup PkgShapeCorrGeodesics
 /// All-pairs geodesic distances between the vertices of `tm`, in the order of the engine's vertex
-/// index map. Cost: n single-source queries, batched (heat method: two triangular solves with
-/// many right-hand sides per batch, batches in parallel).
+/// index map. Cost: n single-source queries in parallel. The default backend is fast marching
+/// (TOSCA wolf, 4344 vertices, 2 cores: 1.3 s, mean error 0.36% of the diameter); the heat method
+/// (`geodesic_method(Geodesic_method::HEAT)`, batched multi right-hand-side solves) is twice as
+/// fast and half as accurate (0.7 s, 0.8% with the intrinsic Delaunay triangulation).
 /// \param np optional named parameters:
 /// | name | meaning | type | default |
 /// |---|---|---|---|
 /// | `geodesic_engine` | a precomputed engine to reuse | pointer to a `GeodesicDistanceEngine` | none: one is built |
-/// | `geodesic_method` | backend to build when no engine is given | `Geodesic_method` | `HEAT` |
+/// | `geodesic_method` | backend to build when no engine is given | `Geodesic_method` | `FAST_MARCHING` |
 /// | `progress_callback` | called as `f(sources_done, sources_total)` | `std::function<void(size_t, size_t)>` | none |
 /// | (engine parameters) | `vertex_point_map`, `vertex_index_map`, `time_step_factor`, `use_intrinsic_delaunay`, `number_of_threads`, `batch_size` | see `Heat_method_geodesics` | |
 /// \returns a `Geodesic_distance_matrix` (float, symmetrized)
@@ -95,7 +97,7 @@ Geodesic_distance_matrix compute_all_pairs_geodesic_distances(const TriangleMesh
   const auto progress = internal::progress_of(np);
   return internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
     return internal::all_pairs_from_engine(engine, progress);
-  });
+  }, Geodesic_method::FAST_MARCHING);
 }
 
 } // namespace shapecorr

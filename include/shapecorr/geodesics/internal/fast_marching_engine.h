@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -26,11 +25,17 @@ public:
   /// Per-query scratch state; reusable across queries (reset costs what the last query touched).
   struct Workspace {
     std::vector<double> dist;
-    std::vector<std::uint32_t> stamp;  // == generation: dist valid; == generation with accepted flag
     std::vector<char> accepted;
-    std::vector<int> touched;
-    std::uint32_t generation = 0;
-    std::vector<std::pair<double, int>> heap_storage;
+    std::vector<int> touched;   // vertices whose state the last query changed
+    std::vector<int> heap;      // indexed 4-ary min-heap of vertices, keyed by dist
+    std::vector<int> position;  // position of each vertex in `heap`, -1 when absent
+  };
+
+  /// One possible update when vertex v is accepted: target t of a face (v, o, t), with the
+  /// unfolding of t over the edge v-o (v at (0,0), o at (c,0), t at (cx, cy), cy > 0).
+  struct Update {
+    int t, o;
+    double l_vt, l_ot, c, cx, cy;
   };
 
   explicit Fast_marching_engine(const Triangle_arrays& a) : m_n(a.number_of_vertices()) {
@@ -52,26 +57,28 @@ public:
             (a.point(static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>((k + 1) % 3)])) -
              a.point(static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>((k + 2) % 3)]))).norm();
     }
-    // unfolding of corner k over its opposite edge: A = corner k+1 at (0,0), B = corner k+2 at
-    // (c,0), corner k at (cx, cy), cy > 0
-    m_unfold.resize(m);
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k) {
-        const double c = m_len[f][static_cast<std::size_t>(k)];                 // |AB|
-        const double b = m_len[f][static_cast<std::size_t>((k + 2) % 3)];       // |A C|: opposite corner k+2
-        const double a = m_len[f][static_cast<std::size_t>((k + 1) % 3)];       // |B C|: opposite corner k+1
-        const double cx = c > 0 ? (b * b + c * c - a * a) / (2 * c) : 0.0;
-        const double cy2 = b * b - cx * cx;
-        m_unfold[f][static_cast<std::size_t>(k)] = {c, cx, cy2 > 0 ? std::sqrt(cy2) : 0.0};
-      }
+    // per vertex, the updates it triggers when accepted (two per incident face), pre-oriented
     m_offset.assign(m_n + 1, 0);
-    for(std::size_t v = 0; v < m_n; ++v) m_offset[v + 1] = m_offset[v] + deg[v + 1];
-    m_incident.resize(static_cast<std::size_t>(m_offset[m_n]));
+    for(std::size_t v = 0; v < m_n; ++v) m_offset[v + 1] = m_offset[v] + 2 * deg[v + 1];
+    m_updates.resize(static_cast<std::size_t>(m_offset[m_n]));
     std::vector<int> fill(m_offset.begin(), m_offset.end() - 1);
     for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k)
-        m_incident[static_cast<std::size_t>(fill[static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>(k)])]++)] =
-            static_cast<int>(3 * f) + k;
+      for(int k = 0; k < 3; ++k) {
+        const int v = m_faces[f][static_cast<std::size_t>(k)];
+        for(int s = 1; s <= 2; ++s) {
+          const int tc = (k + s) % 3, oc = (k + 3 - s) % 3;
+          Update u;
+          u.t = m_faces[f][static_cast<std::size_t>(tc)];
+          u.o = m_faces[f][static_cast<std::size_t>(oc)];
+          u.l_vt = m_len[f][static_cast<std::size_t>(oc)];
+          u.l_ot = m_len[f][static_cast<std::size_t>(k)];
+          u.c = m_len[f][static_cast<std::size_t>(tc)];
+          u.cx = u.c > 0 ? (u.l_vt * u.l_vt + u.c * u.c - u.l_ot * u.l_ot) / (2 * u.c) : 0.0;
+          const double cy2 = u.l_vt * u.l_vt - u.cx * u.cx;
+          u.cy = cy2 > 0 ? std::sqrt(cy2) : 0.0;
+          m_updates[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
+        }
+      }
   }
 
   std::size_t number_of_vertices() const { return m_n; }
@@ -79,9 +86,10 @@ public:
   void prepare(Workspace& w) const {
     if(w.dist.size() != m_n) {
       w.dist.assign(m_n, std::numeric_limits<double>::infinity());
-      w.stamp.assign(m_n, 0);
       w.accepted.assign(m_n, 0);
-      w.generation = 0;
+      w.position.assign(m_n, -1);
+      w.touched.clear();
+      w.heap.clear();
     }
   }
 
@@ -94,53 +102,48 @@ public:
     for(int v : w.touched) {
       w.dist[static_cast<std::size_t>(v)] = std::numeric_limits<double>::infinity();
       w.accepted[static_cast<std::size_t>(v)] = 0;
+      w.position[static_cast<std::size_t>(v)] = -1;
     }
     w.touched.clear();
-    typedef std::pair<double, int> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap(std::greater<Item>(), std::move(w.heap_storage));
+    w.heap.clear();
     for(std::size_t s : sources) {
       if(s >= m_n)
         throw Invalid_input(Mesh_defect::invalid_argument, "source vertex " + std::to_string(s) + " out of range (mesh has " +
                                                                std::to_string(m_n) + " vertices)");
-      if(w.dist[s] != 0.0) { w.dist[s] = 0.0; w.touched.push_back(static_cast<int>(s)); }
-      heap.emplace(0.0, static_cast<int>(s));
+      if(w.position[s] < 0) {
+        w.touched.push_back(static_cast<int>(s));
+        w.dist[s] = 0.0;
+        push(w, static_cast<int>(s));
+      }
     }
-    while(!heap.empty()) {
-      const Item top = heap.top();
-      heap.pop();
-      const std::size_t v = static_cast<std::size_t>(top.second);
-      if(w.accepted[v] || top.first > w.dist[v]) continue;
-      if(top.first > radius) break;
-      w.accepted[v] = 1;
-      visit(v, top.first);
+    double* dist = w.dist.data();
+    char* accepted = w.accepted.data();
+    while(!w.heap.empty()) {
+      const int vi = w.heap.front();
+      const std::size_t v = static_cast<std::size_t>(vi);
+      const double dv = dist[v];
+      if(dv > radius) break;
+      pop(w);
+      accepted[v] = 1;
+      visit(v, dv);
       for(int k = m_offset[v]; k < m_offset[v + 1]; ++k) {
-        const int c = m_incident[static_cast<std::size_t>(k)];
-        const std::size_t f = static_cast<std::size_t>(c / 3);
-        const int corner = c % 3;
-        for(int s = 1; s <= 2; ++s) { // update the two other corners of the face
-          const int tc = (corner + s) % 3, oc = (corner + 3 - s) % 3;
-          const std::size_t t = static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>(tc)]);
-          if(w.accepted[t]) continue;
-          const std::size_t o = static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>(oc)]);
-          double d = w.dist[v] + m_len[f][static_cast<std::size_t>(oc)]; // edge v-t is opposite corner oc
-          if(w.accepted[o]) {
-            // unfolding of t over edge (t+1, t+2); v is corner t+1 when s == 2, corner t+2 when s == 1
-            const auto& u = m_unfold[f][static_cast<std::size_t>(tc)];
-            const bool v_is_A = (s == 2);
-            const double dA = v_is_A ? w.dist[v] : w.dist[o], dB = v_is_A ? w.dist[o] : w.dist[v];
-            d = std::min(d, unfolded_update(dA, dB, u[0], u[1], u[2], std::min(d, w.dist[o] + m_len[f][static_cast<std::size_t>(corner)])));
-          }
-          if(d < w.dist[t]) {
-            if(std::isinf(w.dist[t])) w.touched.push_back(static_cast<int>(t));
-            w.dist[t] = d;
-            heap.emplace(d, static_cast<int>(t));
-          }
+        const Update& u = m_updates[static_cast<std::size_t>(k)];
+        const std::size_t t = static_cast<std::size_t>(u.t);
+        if(accepted[t]) continue;
+        double d = dv + u.l_vt;
+        const std::size_t o = static_cast<std::size_t>(u.o);
+        if(accepted[o]) {
+          d = std::min(d, dist[o] + u.l_ot);
+          d = unfolded_update(dv, dist[o], u.c, u.cx, u.cy, d);
+        }
+        if(d < dist[t]) {
+          if(std::isinf(dist[t])) w.touched.push_back(u.t);
+          dist[t] = d;
+          if(w.position[t] < 0) push(w, u.t);
+          else sift_up(w, static_cast<std::size_t>(w.position[t]));
         }
       }
     }
-    // keep the heap's buffer for the next query
-    while(!heap.empty()) heap.pop();
-    w.heap_storage.clear();
   }
 
   /// Virtual-source update with C unfolded at (cx, cy) over A = (0,0), B = (c,0); returns
@@ -158,32 +161,57 @@ public:
     return std::min(fallback, std::sqrt(dx * dx + dy * dy));
   }
 
-  /// Distance at C from A, B with distances dA, dB; c = |AB|, b = |AC|, a = |BC|.
-  static double triangle_update(double dA, double dB, double c, double b, double a) {
-    const double edge = std::min(dA + b, dB + a);
-    if(!(c > 0)) return edge;
-    const double cx = (b * b + c * c - a * a) / (2 * c);
-    const double cy2 = b * b - cx * cx;
-    if(!(cy2 > 0)) return edge;
-    const double cy = std::sqrt(cy2);
-    const double sx = (dA * dA - dB * dB + c * c) / (2 * c);
-    const double sy2 = dA * dA - sx * sx;
-    if(sy2 < 0) return edge;
-    const double sy = -std::sqrt(sy2);
-    // the ray from the virtual source S to C must cross the segment AB
-    const double t = -sy / (cy - sy);
-    const double x = sx + t * (cx - sx);
-    if(x < 0 || x > c) return edge;
-    return std::min(edge, std::hypot(cx - sx, cy - sy));
+private:
+  // indexed 4-ary min-heap on w.dist
+  static void place(Workspace& w, std::size_t i, int v) {
+    w.heap[i] = v;
+    w.position[static_cast<std::size_t>(v)] = static_cast<int>(i);
+  }
+  static void sift_up(Workspace& w, std::size_t i) {
+    const int v = w.heap[i];
+    const double key = w.dist[static_cast<std::size_t>(v)];
+    while(i > 0) {
+      const std::size_t parent = (i - 1) / 4;
+      const int p = w.heap[parent];
+      if(!(key < w.dist[static_cast<std::size_t>(p)])) break;
+      place(w, i, p);
+      i = parent;
+    }
+    place(w, i, v);
+  }
+  static void push(Workspace& w, int v) {
+    w.heap.push_back(v);
+    sift_up(w, w.heap.size() - 1);
+  }
+  static void pop(Workspace& w) {
+    w.position[static_cast<std::size_t>(w.heap.front())] = -1;
+    const int last = w.heap.back();
+    w.heap.pop_back();
+    const std::size_t n = w.heap.size();
+    if(n == 0) return;
+    const double key = w.dist[static_cast<std::size_t>(last)];
+    std::size_t i = 0;
+    for(;;) {
+      const std::size_t first = 4 * i + 1;
+      if(first >= n) break;
+      std::size_t best = first;
+      double bk = w.dist[static_cast<std::size_t>(w.heap[first])];
+      for(std::size_t c = first + 1; c < std::min(first + 4, n); ++c) {
+        const double ck = w.dist[static_cast<std::size_t>(w.heap[c])];
+        if(ck < bk) { bk = ck; best = c; }
+      }
+      if(!(bk < key)) break;
+      place(w, i, w.heap[best]);
+      i = best;
+    }
+    place(w, i, last);
   }
 
-private:
   std::size_t m_n;
   std::vector<std::array<int, 3>> m_faces;
-  std::vector<std::array<double, 3>> m_len;                  // length of the edge opposite each corner
-  std::vector<std::array<std::array<double, 3>, 3>> m_unfold;  // per corner: c, cx, cy (see constructor)
-  std::vector<int> m_offset;
-  std::vector<int> m_incident;  // corner ids 3f+k around each vertex
+  std::vector<std::array<double, 3>> m_len;  // length of the edge opposite each corner
+  std::vector<int> m_offset;                 // CSR offsets into m_updates per vertex
+  std::vector<Update> m_updates;
 };
 
 } // namespace internal

@@ -17,7 +17,8 @@ namespace shapecorr {
 namespace internal {
 
 template <typename TriangleMesh, typename NamedParameters, typename Fn>
-decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameters& np, Fn&& fn) {
+decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameters& np, Fn&& fn,
+                                    Geodesic_method default_method = Geodesic_method::HEAT) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   auto given = get_parameter(np, internal_np::geodesic_engine);
@@ -26,7 +27,7 @@ decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameter
                   "geodesic_engine expects a pointer to an engine: parameters::geodesic_engine(&engine)");
     return fn(*given);
   } else {
-    const Geodesic_method method = choose_parameter(get_parameter(np, internal_np::geodesic_method), Geodesic_method::HEAT);
+    const Geodesic_method method = choose_parameter(get_parameter(np, internal_np::geodesic_method), default_method);
     if(method == Geodesic_method::EXACT) {
       Exact_geodesics<TriangleMesh, typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type> engine(tm, np);
       return fn(engine);
