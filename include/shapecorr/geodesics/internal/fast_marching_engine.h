@@ -35,7 +35,7 @@ public:
   /// unfolding of t over the edge v-o (v at (0,0), o at (c,0), t at (cx, cy), cy > 0).
   struct Update {
     int t, o;
-    double l_vt, l_ot, c, cx, cy;
+    double l_vt, c, inv2c, cx, cy;
   };
 
   explicit Fast_marching_engine(const Triangle_arrays& a) : m_n(a.number_of_vertices()) {
@@ -71,11 +71,12 @@ public:
           u.t = m_faces[f][static_cast<std::size_t>(tc)];
           u.o = m_faces[f][static_cast<std::size_t>(oc)];
           u.l_vt = m_len[f][static_cast<std::size_t>(oc)];
-          u.l_ot = m_len[f][static_cast<std::size_t>(k)];
+          const double l_ot = m_len[f][static_cast<std::size_t>(k)];
           u.c = m_len[f][static_cast<std::size_t>(tc)];
-          u.cx = u.c > 0 ? (u.l_vt * u.l_vt + u.c * u.c - u.l_ot * u.l_ot) / (2 * u.c) : 0.0;
+          u.inv2c = u.c > 0 ? 1.0 / (2 * u.c) : 0.0;
+          u.cx = (u.l_vt * u.l_vt + u.c * u.c - l_ot * l_ot) * u.inv2c;
           const double cy2 = u.l_vt * u.l_vt - u.cx * u.cx;
-          u.cy = cy2 > 0 ? std::sqrt(cy2) : 0.0;
+          u.cy = (u.c > 0 && cy2 > 0) ? std::sqrt(cy2) : 0.0; // cy = 0: no triangle update
           m_updates[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
         }
       }
@@ -132,10 +133,8 @@ public:
         if(accepted[t]) continue;
         double d = dv + u.l_vt;
         const std::size_t o = static_cast<std::size_t>(u.o);
-        if(accepted[o]) {
-          d = std::min(d, dist[o] + u.l_ot);
-          d = unfolded_update(dv, dist[o], u.c, u.cx, u.cy, d);
-        }
+        // (the edge update from o was applied when o was accepted)
+        if(accepted[o]) d = unfolded_update(dv, dist[o], u.c, u.inv2c, u.cx, u.cy, d);
         if(d < dist[t]) {
           if(std::isinf(dist[t])) w.touched.push_back(u.t);
           dist[t] = d;
@@ -146,18 +145,20 @@ public:
     }
   }
 
-  /// Virtual-source update with C unfolded at (cx, cy) over A = (0,0), B = (c,0); returns
-  /// `fallback` where the ray from the virtual source misses the segment AB.
-  static double unfolded_update(double dA, double dB, double c, double cx, double cy, double fallback) {
-    if(!(c > 0) || !(cy > 0)) return fallback;
-    const double sx = (dA * dA - dB * dB + c * c) / (2 * c);
+  /// Virtual-source update with C unfolded at (cx, cy) over A = (0,0), B = (c,0) (`inv2c` = 1/(2c));
+  /// returns `fallback` where the ray from the virtual source misses the segment AB.
+  static double unfolded_update(double dA, double dB, double c, double inv2c, double cx, double cy, double fallback) {
+    if(!(cy > 0)) return fallback;
+    const double sx = (dA * dA - dB * dB + c * c) * inv2c;
     const double sy2 = dA * dA - sx * sx;
     if(sy2 < 0) return fallback;
     const double sy = -std::sqrt(sy2);
-    // the ray from the virtual source S = (sx, sy) to C must cross the segment AB (y = 0)
-    const double x = sx + (cx - sx) * (-sy / (cy - sy));
-    if(x < 0 || x > c) return fallback;
+    // the ray from the virtual source S = (sx, sy) to C crosses the segment AB iff A and B lie on
+    // either side of the line SC (cross products of opposite signs; no division)
     const double dx = cx - sx, dy = cy - sy;
+    const double side_a = dx * (-sy) - dy * (-sx);
+    const double side_b = dx * (-sy) - dy * (c - sx);
+    if(side_a < 0 || side_b > 0) return fallback;
     return std::min(fallback, std::sqrt(dx * dx + dy * dy));
   }
 
