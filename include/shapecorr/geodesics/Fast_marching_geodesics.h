@@ -6,6 +6,7 @@
 
 #include <shapecorr/geodesics/internal/fast_marching_engine.h>
 #include <shapecorr/internal/parallel.h>
+#include <shapecorr/geodesics/internal/engine_helpers.h>
 #include <shapecorr/mesh/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
 
@@ -81,25 +82,13 @@ public:
   /// As `Heat_method_geodesics::for_each_batch` (batches of one source, in parallel).
   template <typename BlockFn>
   void for_each_batch(const std::vector<std::size_t>& sources, BlockFn&& fn, const Progress& progress = {}) const {
-    std::mutex mtx;
-    std::size_t done = 0;
     std::vector<Workspace> ws(m_threads);
-    internal::parallel_for(sources.size(), m_threads, [&](std::size_t k, unsigned tid) {
-      Eigen::MatrixXd block = full({sources[k]}, ws[tid]);
-      fn(k, std::size_t(1), block);
-      if(progress) {
-        std::lock_guard<std::mutex> lock(mtx);
-        progress(++done, sources.size());
-      }
-    });
+    internal::for_each_single_source(sources, m_threads, [&](std::size_t s, unsigned tid) { return full({s}, ws[tid]); }, fn, progress);
   }
 
   template <typename VertexRange, typename VertexDistanceMap>
   void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
-    std::vector<std::size_t> ids;
-    for(vertex_descriptor v : sources) ids.push_back(index(v));
-    const Eigen::VectorXd d = distances_to_set(ids);
-    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(distance_map, vertex(i), d[static_cast<Eigen::Index>(i)]);
+    internal::write_distances_to_set(*this, sources, distance_map);
   }
 
 private:

@@ -5,6 +5,7 @@
 #define SHAPECORR_GEODESICS_HEAT_METHOD_GEODESICS_H
 
 #include <shapecorr/geodesics/internal/heat_method_engine.h>
+#include <shapecorr/geodesics/internal/engine_helpers.h>
 #include <shapecorr/mesh/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
 
@@ -99,10 +100,7 @@ public:
   /// \tparam VertexDistanceMap a `WritablePropertyMap<vertex_descriptor, double>`
   template <typename VertexRange, typename VertexDistanceMap>
   void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
-    std::vector<std::size_t> ids;
-    for(vertex_descriptor v : sources) ids.push_back(index(v));
-    const Eigen::VectorXd d = distances_to_set(ids);
-    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(distance_map, vertex(i), d[static_cast<Eigen::Index>(i)]);
+    internal::write_distances_to_set(*this, sources, distance_map);
   }
 
 private:
