@@ -11,6 +11,8 @@
 #include <shapecorr/sampling/furthest_point_sampling.h>
 
 #include <cmath>
+#include <limits>
+#include <mutex>
 #include <numeric>
 #include <vector>
 
@@ -100,7 +102,7 @@ void compute_average_geodesic_distance(const TriangleMesh& tm, VertexAgdMap agd_
       CGAL::Random rng(seed);
       const std::size_t first = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
       sources = internal::furthest_point_sampling_indices(n, k, first, false,
-                                                          [&](std::size_t s) { return engine.distances_from(s); }).samples;
+                                                          [&](std::size_t s) { return engine.distances_from(s); });
     }
     const Eigen::VectorXd agd = internal::global_agd(engine, sources, progress);
     for(std::size_t i = 0; i < n; ++i) put(agd_map, engine.vertex(i), agd[static_cast<Eigen::Index>(i)]);

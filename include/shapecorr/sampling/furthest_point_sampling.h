@@ -21,15 +21,11 @@ enum class Distance_metric { GEODESIC, EUCLIDEAN };
 
 namespace internal {
 
-struct Fps_result {
-  std::vector<std::size_t> samples;   // in selection order
-};
-
-/// `distances_from(i)` gives the distance of every vertex to vertex i (n values).
+/// Sample indices in selection order; `distances_from(i)` gives the distance of every vertex to
+/// vertex i (n values).
 template <typename DistancesFrom>
-Fps_result furthest_point_sampling_indices(std::size_t n, std::size_t count, std::size_t first, bool keep_first,
+std::vector<std::size_t> furthest_point_sampling_indices(std::size_t n, std::size_t count, std::size_t first, bool keep_first,
                                            DistancesFrom&& distances_from) {
-  Fps_result r;
   std::vector<double> mind(n, std::numeric_limits<double>::infinity());
   const std::size_t total = keep_first ? count : count + 1; // the thesis drops the arbitrary start
   std::size_t next = first;
@@ -49,8 +45,7 @@ Fps_result furthest_point_sampling_indices(std::size_t n, std::size_t count, std
     next = arg;
   }
   if(!keep_first && chosen.size() > count) chosen.erase(chosen.begin());
-  r.samples = chosen;
-  return r;
+  return chosen;
 }
 
 } // namespace internal
@@ -93,8 +88,8 @@ OutputIterator furthest_point_sampling(const TriangleMesh& tm, std::size_t count
       CGAL::Random rng(seed);
       first = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
     }
-    const internal::Fps_result r = internal::furthest_point_sampling_indices(n, count, first, keep_first, distances_from);
-    for(std::size_t s : r.samples) *out++ = engine.vertex(s);
+    for(std::size_t s : internal::furthest_point_sampling_indices(n, count, first, keep_first, distances_from))
+      *out++ = engine.vertex(s);
     return 0;
   };
   if(metric == Distance_metric::EUCLIDEAN) {
