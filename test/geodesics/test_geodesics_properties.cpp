@@ -212,3 +212,25 @@ TEST_CASE("every engine reads positions through the vertex_point_map parameter",
   shapecorr::Exact_geodesics<test::Surface_mesh, decltype(scaled)> exact(m, np);
   CHECK(exact.distances_from(0)[3] == Approx(2 * 3.14159).epsilon(0.01));
 }
+
+namespace {
+// A solver policy whose factorization always fails, as a non-positive-definite matrix would.
+struct Failing_solver {
+  void compute(const Eigen::SparseMatrix<double>&) {}
+  Eigen::ComputationInfo info() const { return Eigen::NumericalIssue; }
+  template <typename B>
+  B solve(const B& b) const { return b; }
+};
+} // namespace
+
+TEST_CASE("a failing factorization raises Solver_failure, not garbage", "[geodesics][errors]") {
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 1);
+  shapecorr::Heat_method_geodesics<test::Surface_mesh, Failing_solver> heat(m);
+  try {
+    heat.distances_from(0);
+    FAIL("no exception");
+  } catch(const shapecorr::Solver_failure& e) {
+    CHECK(std::string(e.what()).find("factorization") != std::string::npos);
+  }
+}
