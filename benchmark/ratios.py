@@ -21,7 +21,7 @@ if ref:
     print(f"CGAL Heat_method_3: {per:.2f} ms/source -> all pairs {cgal_loop/1e3:.2f} s looping, "
           f"{cgal_all/1e3:.2f} s if split over {threads} threads (mean |err| {ref['mean_abs_err_pct_D']:.3f}% D)")
 for name, b in runs.items():
-    if name.startswith("BM_AllPairs"):
+    if name.startswith("BM_AllPairs"):  # noqa: every all-pairs variant
         line = f"{name}: {ms(b)/1e3:.3f} s, mean |err| vs exact {b['mean_abs_err_pct_D']:.3f}% D"
         if cgal_all:
             line += (f", {cgal_loop / ms(b):.1f}x faster than looping CGAL's heat method"

@@ -98,7 +98,7 @@ void BM_AllPairs_FastMarching(benchmark::State& state) {
   set_counters(state, f.mesh.number_of_vertices());
   state.counters["mean_abs_err_pct_D"] = f.mean_error_pct([&](std::size_t s) { return Eigen::VectorXd(M.row(s).transpose().cast<double>()); });
 }
-BENCHMARK(BM_AllPairs_FastMarching)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_AllPairs_FastMarching)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 // Reference: CGAL's heat method, precomputed once, one source at a time. Timed on 200 sources and
 // reported per source; benchmark/run scales it to all n sources (2 threads, one CGAL object each).

@@ -234,3 +234,37 @@ TEST_CASE("a failing factorization raises Solver_failure, not garbage", "[geodes
     CHECK(std::string(e.what()).find("factorization") != std::string::npos);
   }
 }
+
+TEMPLATE_TEST_CASE("all pairs by fast marching: one triangle, mirrored", "[geodesics][all-pairs]", test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_torus(m, 2.0, 0.6, 30, 10);
+  shapecorr::Fast_marching_geodesics<TestType> fmm(m);
+  const auto D = shapecorr::compute_all_pairs_geodesic_distances(m, SP::geodesic_engine(&fmm));
+  const std::size_t n = num_vertices(m);
+  CHECK((D.matrix() - D.matrix().transpose()).cwiseAbs().maxCoeff() == 0.0f);
+  CHECK(D.matrix().diagonal().cwiseAbs().maxCoeff() == 0.0f);
+  // every entry is the march from one of its two ends
+  std::vector<Eigen::VectorXd> rows(n);
+  for(std::size_t i = 0; i < n; ++i) rows[i] = fmm.distances_from(i);
+  std::size_t mismatches = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+      if(D(i, j) != static_cast<float>(rows[i][static_cast<Eigen::Index>(j)]) && D(i, j) != static_cast<float>(rows[j][static_cast<Eigen::Index>(i)])) ++mismatches;
+  CHECK(mismatches == 0);
+}
+
+TEST_CASE("all pairs by fast marching over two components", "[geodesics][all-pairs][components]") {
+  test::Surface_mesh a, b;
+  shapecorr::make_icosphere(a, 1);
+  shapecorr::make_icosphere(b, 1);
+  for(auto v : vertices(b)) b.point(v) = b.point(v) + test::K::Vector_3(4, 0, 0);
+  a.join(b);
+  const auto D = shapecorr::compute_all_pairs_geodesic_distances(a); // default: fast marching
+  CHECK(std::isfinite(D(0, 41)));
+  CHECK(std::isinf(D(0, 42)));
+  CHECK(std::isinf(D(83, 1)));
+  // within the second component: the march from one of the two ends
+  shapecorr::Fast_marching_geodesics<test::Surface_mesh> fmm(a);
+  const float from42 = static_cast<float>(fmm.distances_from(42)[83]), from83 = static_cast<float>(fmm.distances_from(83)[42]);
+  CHECK((D(42, 83) == from42 || D(42, 83) == from83));
+}

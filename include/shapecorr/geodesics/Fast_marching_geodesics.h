@@ -72,6 +72,14 @@ public:
     m_engine.march({source}, radius, ws, [&](std::size_t v, double d) { out.emplace_back(v, d); });
   }
 
+  /// The march itself: accepts vertices in increasing distance from `sources` up to `radius`,
+  /// calling `visit(index, distance)` for each; a `visit` returning `bool` stops the march with
+  /// `false`. For queries from several threads, give each thread its own `ws`.
+  template <typename Visit>
+  void march(const std::vector<std::size_t>& sources, double radius, Workspace& ws, Visit&& visit) const {
+    m_engine.march(sources, radius, ws, std::forward<Visit>(visit));
+  }
+
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
     if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "fast marching: no source vertex given");
     Workspace ws;

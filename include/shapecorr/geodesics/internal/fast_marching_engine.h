@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -95,7 +96,8 @@ public:
   }
 
   /// March from `sources` (distance 0) until every vertex closer than `radius` is accepted.
-  /// `visit(v, d)` is called once per accepted vertex, in increasing distance order.
+  /// `visit(v, d)` is called once per accepted vertex, in increasing distance order; if it returns
+  /// a `bool`, `false` stops the march there.
   template <typename Visit>
   void march(const std::vector<std::size_t>& sources, double radius, Workspace& w, Visit&& visit) const {
     prepare(w);
@@ -126,7 +128,11 @@ public:
       if(dv > radius) break;
       pop(w);
       accepted[v] = 1;
-      visit(v, dv);
+      if constexpr(std::is_same<decltype(visit(v, dv)), bool>::value) {
+        if(!visit(v, dv)) break;
+      } else {
+        visit(v, dv);
+      }
       for(int k = m_offset[v]; k < m_offset[v + 1]; ++k) {
         const Update& u = m_updates[static_cast<std::size_t>(k)];
         const std::size_t t = static_cast<std::size_t>(u.t);
