@@ -57,6 +57,15 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
     CHECK(read_defect<TestType>(write_file("garbage.off", "OFF\nthis is not a mesh\n")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("unknown.xyz3", "1 2 3\n")) == D::unreadable_file);
   }
+  SECTION("a face refers to a vertex past the end: rejected by CGAL's reader, a typed error here") {
+    CHECK(read_defect<TestType>(write_file("badindex.off", "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n7 7 7\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 9\n")) ==
+          D::unreadable_file);
+    // the soup validator reports such a face where a reader lets it through
+    const std::vector<test::Point> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const auto r = shapecorr::validate_polygon_soup(p, std::vector<std::vector<std::size_t>>{{0, 1, 2}, {0, 1, 9}});
+    CHECK(r.degenerate_faces == 1);
+    CHECK(r.examples.at(D::degenerate_face) == "face 1 refers to a vertex past the end");
+  }
   SECTION("no faces") {
     CHECK(read_defect<TestType>(write_file("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")) == D::empty_mesh);
   }

@@ -125,7 +125,8 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
     for(std::size_t i = 0; i < points.size(); ++i) if(used[i]) { remap[i] = kept.size(); kept.push_back(points[i]); }
     if(kept.size() != points.size()) {
       result.repairs.push_back("removed " + std::to_string(points.size() - kept.size()) + " isolated vertices");
-      for(auto& f : polygons) for(auto& v : f) v = remap[v];
+      for(auto& f : polygons)
+        for(auto& v : f) v = v < remap.size() ? remap[v] : kept.size() + v; // out-of-range stays out of range
       points.swap(kept);
     }
   }
