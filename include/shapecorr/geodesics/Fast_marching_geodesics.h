@@ -46,7 +46,6 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
-    m_workspaces.resize(m_threads);
   }
 
   std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
@@ -60,8 +59,8 @@ public:
   /// nearest first. Uses the calling thread's own workspace `ws` (see `Workspace`) when given.
   /// \pre radius >= 0
   void distances_within(std::size_t source, double radius, Ball& out) const {
-    std::lock_guard<std::mutex> lock(m_default_ws_mutex);
-    distances_within(source, radius, out, m_workspaces[0]);
+    std::lock_guard<std::mutex> lock(m_default_workspace_mutex);
+    distances_within(source, radius, out, m_default_workspace);
   }
   /// Scratch state of one thread's queries; make one per thread to query concurrently.
   typedef internal::Fast_marching_engine::Workspace Workspace;
@@ -111,8 +110,8 @@ private:
   internal::Indexed_mesh<TriangleMesh> m_mesh;
   internal::Fast_marching_engine m_engine;
   unsigned m_threads = 1;
-  mutable std::vector<Workspace> m_workspaces;
-  mutable std::mutex m_default_ws_mutex;
+  mutable Workspace m_default_workspace; // for calls without a workspace of their own
+  mutable std::mutex m_default_workspace_mutex;
 };
 
 /// \ingroup PkgShapeCorrGeodesics

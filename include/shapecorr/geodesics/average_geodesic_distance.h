@@ -30,22 +30,15 @@ inline Eigen::VectorXd incident_triangle_areas(const Triangle_arrays& a) {
   return A;
 }
 
-/// Global agd of every vertex from the distance fields of `sources`, weighted by the area of each
-/// source's geodesic Voronoi cell (or by A(X) itself when every vertex is a source).
-template <typename GeodesicDistanceEngine>
-Eigen::VectorXd global_agd(const GeodesicDistanceEngine& engine, const std::vector<std::size_t>& sources,
-                           const std::function<void(std::size_t, std::size_t)>& progress) {
-  const std::size_t n = engine.number_of_vertices(), k = sources.size();
-  const Eigen::VectorXd A = incident_triangle_areas(engine.arrays());
-  const bool all = (k == n);
-  // distances from every source to every vertex, row s = from sources[s] (float: k x n x 4 bytes)
-  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(n));
-  engine.for_each_batch(sources, [&](std::size_t first, std::size_t count, const Eigen::MatrixXd& block) {
-    D.block(static_cast<Eigen::Index>(first), 0, static_cast<Eigen::Index>(count), static_cast<Eigen::Index>(n)) =
-        block.transpose().cast<float>();
-  }, progress);
+/// Global agd of every vertex from the distance fields of its sources (row s of `D`: distances
+/// from source s), weighted by the area of each source's geodesic Voronoi cell, or by A(X) itself
+/// when every vertex is a source (D square).
+inline Eigen::VectorXd global_agd(const Eigen::VectorXd& A,
+                                  const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& D,
+                                  const std::vector<std::size_t>& sources) {
+  const std::size_t n = static_cast<std::size_t>(D.cols()), k = static_cast<std::size_t>(D.rows());
   Eigen::VectorXd w(static_cast<Eigen::Index>(k));
-  if(all) {
+  if(k == n) {
     for(std::size_t s = 0; s < k; ++s) w[static_cast<Eigen::Index>(s)] = A[static_cast<Eigen::Index>(sources[s])];
   } else {
     w.setZero();
@@ -94,17 +87,31 @@ void compute_average_geodesic_distance(const TriangleMesh& tm, VertexAgdMap agd_
   const auto progress = internal::progress_of(np);
   internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
     const std::size_t n = engine.number_of_vertices();
+    // distances from each source to every vertex, row s = from sources[s] (float: k x n x 4 bytes)
+    Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D;
     std::vector<std::size_t> sources;
     if(k == 0 || k >= n) {
       sources.resize(n);
       std::iota(sources.begin(), sources.end(), std::size_t(0));
+      D.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+      engine.for_each_batch(sources, [&](std::size_t first, std::size_t count, const Eigen::MatrixXd& block) {
+        D.block(static_cast<Eigen::Index>(first), 0, static_cast<Eigen::Index>(count), static_cast<Eigen::Index>(n)) =
+            block.transpose().cast<float>();
+      }, progress);
     } else {
-      CGAL::Random rng(seed);
-      const std::size_t first = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
-      sources = internal::furthest_point_sampling_indices(n, k, first, false,
-                                                          [&](std::size_t s) { return engine.distances_from(s); });
+      // the sampling computes each sample's distance field: keep them instead of computing them again
+      std::vector<Eigen::VectorXf> fields;
+      sources = internal::furthest_point_sampling_indices(n, k, internal::seeded_start_vertex(seed, n), false, [&](std::size_t s) {
+        Eigen::VectorXd d = engine.distances_from(s);
+        fields.push_back(d.cast<float>());
+        if(progress) progress(fields.size(), k + 1);
+        return d;
+      });
+      const std::size_t dropped = fields.size() - sources.size(); // the thesis drops the arbitrary start
+      D.resize(static_cast<Eigen::Index>(sources.size()), static_cast<Eigen::Index>(n));
+      for(std::size_t s = 0; s < sources.size(); ++s) D.row(static_cast<Eigen::Index>(s)) = fields[s + dropped].transpose();
     }
-    const Eigen::VectorXd agd = internal::global_agd(engine, sources, progress);
+    const Eigen::VectorXd agd = internal::global_agd(internal::incident_triangle_areas(engine.arrays()), D, sources);
     for(std::size_t i = 0; i < n; ++i) put(agd_map, engine.vertex(i), agd[static_cast<Eigen::Index>(i)]);
     return 0;
   });

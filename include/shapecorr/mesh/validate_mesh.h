@@ -223,7 +223,7 @@ Mesh_report validate_polygon_soup(const PointRange& points, const PolygonRange& 
     for(std::size_t i = 0; i < star[v].size(); ++i) local[star[v][i]] = i;
     auto lfind = [&](std::size_t x) { while(lp[x] != x) { lp[x] = lp[lp[x]]; x = lp[x]; } return x; };
     for(const auto& nb : by_neighbor) {
-      if(nb.second.size() > 2 + 0) continue; // non-manifold edge: reported already, does not join fans
+      if(nb.second.size() > 2) continue; // non-manifold edge: reported already, does not join fans
       for(std::size_t i = 1; i < nb.second.size(); ++i) {
         const std::size_t a = lfind(local[nb.second[0]]), b = lfind(local[nb.second[i]]);
         if(a != b) lp[a] = b;

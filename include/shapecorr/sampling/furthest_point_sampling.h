@@ -21,6 +21,12 @@ enum class Distance_metric { GEODESIC, EUCLIDEAN };
 
 namespace internal {
 
+/// The start vertex the seed draws (shared by every seeded use of furthest point sampling).
+inline std::size_t seeded_start_vertex(unsigned seed, std::size_t n) {
+  CGAL::Random rng(seed);
+  return static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
+}
+
 /// Sample indices in selection order; `distances_from(i)` gives the distance of every vertex to
 /// vertex i (n values).
 template <typename DistancesFrom>
@@ -85,8 +91,7 @@ OutputIterator furthest_point_sampling(const TriangleMesh& tm, std::size_t count
     if constexpr(!std::is_same<decltype(given), CGAL::internal_np::Param_not_found>::value) {
       first = engine.index(static_cast<vertex_descriptor>(given));
     } else {
-      CGAL::Random rng(seed);
-      first = static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
+      first = internal::seeded_start_vertex(seed, n);
     }
     for(std::size_t s : internal::furthest_point_sampling_indices(n, count, first, keep_first, distances_from))
       *out++ = engine.vertex(s);

@@ -9,7 +9,7 @@
 #define SHAPECORR_GEODESICS_INTERNAL_FAST_MARCHING_ENGINE_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/mesh/internal/intrinsic_triangulation.h>
 
 #include <cmath>
 #include <cstdint>
@@ -72,12 +72,11 @@ public:
           u.t = m_faces[f][static_cast<std::size_t>(tc)];
           u.o = m_faces[f][static_cast<std::size_t>(oc)];
           u.l_vt = m_len[f][static_cast<std::size_t>(oc)];
-          const double l_ot = m_len[f][static_cast<std::size_t>(k)];
           u.c = m_len[f][static_cast<std::size_t>(tc)];
           u.inv2c = u.c > 0 ? 1.0 / (2 * u.c) : 0.0;
-          u.cx = (u.l_vt * u.l_vt + u.c * u.c - l_ot * l_ot) * u.inv2c;
-          const double cy2 = u.l_vt * u.l_vt - u.cx * u.cx;
-          u.cy = (u.c > 0 && cy2 > 0) ? std::sqrt(cy2) : 0.0; // cy = 0: no triangle update
+          const auto apex = unfold_apex(u.c, u.l_vt, m_len[f][static_cast<std::size_t>(k)]);
+          u.cx = apex.first;
+          u.cy = apex.second; // cy = 0 (degenerate face): no triangle update
           m_updates[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = u;
         }
       }

@@ -46,10 +46,9 @@ public:
     if(!arrays.V.allFinite())
       throw Invalid_input(Mesh_defect::non_finite_coordinate, "heat method: the mesh has NaN or infinite coordinates");
     Intrinsic_triangulation tri = Intrinsic_triangulation::from_arrays(arrays);
-    double h = 0;
+    double h = 0; // mean edge length (interior edges counted from both sides)
     for(double l : tri.length) h += l;
     h /= static_cast<double>(tri.length.size());
-    m_mean_edge_length = h;
     if(opt.intrinsic_delaunay) m_flips = tri.make_delaunay();
 
     m_components = vertex_components(m_n, arrays.F, m_component);
@@ -63,11 +62,9 @@ public:
       const double l01 = tri.length[3 * f], l12 = tri.length[3 * f + 1], l20 = tri.length[3 * f + 2];
       const double A = tri.area(f);
       m_face_area[f] = A;
-      std::array<Eigen::Vector2d, 3> q;
-      q[0] = Eigen::Vector2d(0, 0);
-      q[1] = Eigen::Vector2d(l01, 0);
-      const double x = l01 > 0 ? (l01 * l01 + l20 * l20 - l12 * l12) / (2 * l01) : 0.0;
-      q[2] = Eigen::Vector2d(x, std::sqrt(std::max(0.0, l20 * l20 - x * x)));
+      const auto apex = unfold_apex(l01, l20, l12);
+      const std::array<Eigen::Vector2d, 3> q = {Eigen::Vector2d(0, 0), Eigen::Vector2d(l01, 0),
+                                                Eigen::Vector2d(apex.first, apex.second)};
       for(int k = 0; k < 3; ++k) {
         const Eigen::Vector2d e = q[static_cast<std::size_t>((k + 2) % 3)] - q[static_cast<std::size_t>((k + 1) % 3)];
         m_grad[f][static_cast<std::size_t>(k)] = A > 0 ? Eigen::Vector2d(-e.y(), e.x()) / (2 * A) : Eigen::Vector2d(0, 0);
@@ -77,16 +74,9 @@ public:
     const Eigen::VectorXd M = lumped_mass(tri);
     const double t = opt.time_step_factor * h * h;
     m_time = t;
-    Eigen::SparseMatrix<double> Mdiag(static_cast<Eigen::Index>(m_n), static_cast<Eigen::Index>(m_n));
-    {
-      std::vector<Eigen::Triplet<double>> trip;
-      for(std::size_t i = 0; i < m_n; ++i) {
-        // isolated vertices get a unit mass so both systems stay positive definite
-        const double mi = M[static_cast<Eigen::Index>(i)] > 0 ? M[static_cast<Eigen::Index>(i)] : h * h;
-        trip.emplace_back(static_cast<int>(i), static_cast<int>(i), mi);
-      }
-      Mdiag.setFromTriplets(trip.begin(), trip.end());
-    }
+    // isolated vertices get the mass h^2 so both systems stay positive definite
+    const Eigen::VectorXd mass = (M.array() > 0).select(M, h * h);
+    const Eigen::SparseMatrix<double> Mdiag(mass.asDiagonal());
     m_heat_matrix = Mdiag + t * L;
     // Poisson: L is singular (constants per component); a tiny mass shift makes it definite and only
     // moves the solution by a constant per component, removed when distances are anchored.
@@ -97,11 +87,8 @@ public:
   }
 
   std::size_t number_of_vertices() const { return m_n; }
-  double mean_edge_length() const { return m_mean_edge_length; }
   double time_step() const { return m_time; }
   std::size_t number_of_flips() const { return m_flips; }
-  std::size_t number_of_components() const { return m_components; }
-  int component(std::size_t v) const { return m_component[v]; }
   unsigned number_of_threads() const { return m_threads; }
 
   /// Distances from each source separately: fn(first, count, block) is called once per batch with
@@ -225,7 +212,7 @@ private:
 
   Heat_method_options m_opt;
   std::size_t m_n = 0;
-  double m_mean_edge_length = 0, m_time = 0;
+  double m_time = 0;
   std::size_t m_flips = 0, m_components = 0;
   std::vector<int> m_component;
   std::vector<std::array<int, 3>> m_faces;

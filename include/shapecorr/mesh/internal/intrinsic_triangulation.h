@@ -17,6 +17,15 @@
 namespace shapecorr {
 namespace internal {
 
+/// Planar layout of a triangle from its edge lengths: with A = (0,0) and B = (base,0), the apex C
+/// with |AC| = left and |BC| = right, on the side y >= 0 (y = 0 when the lengths violate the
+/// triangle inequality or base is 0).
+inline std::pair<double, double> unfold_apex(double base, double left, double right) {
+  if(!(base > 0)) return {0.0, 0.0};
+  const double x = (left * left + base * base - right * right) / (2 * base);
+  return {x, std::sqrt(std::max(0.0, left * left - x * x))};
+}
+
 /// Halfedge h = 3 f + k of face f runs from corner k to corner (k+1) mod 3.
 /// `length[h]` is the length of that edge, `twin[h]` the opposite halfedge or -1 on a boundary.
 struct Intrinsic_triangulation {
@@ -101,11 +110,8 @@ struct Intrinsic_triangulation {
                  l_ca = length[static_cast<std::size_t>(h2)], l_ad = length[static_cast<std::size_t>(t1)],
                  l_db = length[static_cast<std::size_t>(t2)];
     // Unfold both triangles into the plane: a = (0,0), b = (l_ab, 0), c above, d below.
-    const double cx = (l_ab * l_ab + l_ca * l_ca - l_bc * l_bc) / (2 * l_ab);
-    const double cy = std::sqrt(std::max(0.0, l_ca * l_ca - cx * cx));
-    const double dx = (l_ab * l_ab + l_ad * l_ad - l_db * l_db) / (2 * l_ab);
-    const double dy = -std::sqrt(std::max(0.0, l_ad * l_ad - dx * dx));
-    const double l_cd = std::hypot(cx - dx, cy - dy);
+    const auto c2 = unfold_apex(l_ab, l_ca, l_bc), d2 = unfold_apex(l_ab, l_ad, l_db);
+    const double l_cd = std::hypot(c2.first - d2.first, c2.second + d2.second);
     if(!(l_cd > 0) || !std::isfinite(l_cd)) return false;
     // the twins of the four outer halfedges
     const int o_bc = twin[static_cast<std::size_t>(h1)], o_ca = twin[static_cast<std::size_t>(h2)],
