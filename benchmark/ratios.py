@@ -4,7 +4,14 @@ ratios against the references measured in the same run."""
 import json
 import sys
 
-runs = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+# With --benchmark_repetitions the medians stand for each benchmark (this machine is noisy).
+benchmarks = json.load(open(sys.argv[1]))["benchmarks"]
+medians = {b["run_name"]: b for b in benchmarks if b.get("aggregate_name") == "median"}
+runs = {}
+for b in benchmarks:
+    if b.get("run_type") == "aggregate":
+        continue
+    runs[b["name"]] = medians.get(b["run_name"], b)
 ctx = json.load(open(sys.argv[1]))["context"]
 def ms(b):
     t = b["real_time"]

@@ -28,7 +28,7 @@ namespace shapecorr {
 /// `GeodesicDistanceEngine` (full single- and multi-source distances, batched queries in parallel).
 ///
 /// Accuracy: first order; on the TOSCA wolf (4344 vertices) the mean error against exact
-/// distances is about 0.5% of the geodesic diameter (see benchmark/README.md).
+/// distances is about 0.36% of the geodesic diameter (see benchmark/README.md).
 /// Vertices not reachable from a source (other components) get `+infinity`.
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
 template <typename TriangleMesh>

@@ -23,13 +23,24 @@ namespace internal {
 
 class Fast_marching_engine {
 public:
+  struct Heap_entry {
+    double key;
+    int v;
+  };
+  /// State of one vertex in a query: its tentative distance and its slot in the heap
+  /// (`far` = not reached yet, `done` = accepted).
+  struct Vertex_state {
+    double dist;
+    int slot;
+  };
+  static constexpr int far = -1, done = -2;
   /// Per-query scratch state; reusable across queries (reset costs what the last query touched).
-  struct Workspace {
-    std::vector<double> dist;
-    std::vector<char> accepted;
-    std::vector<int> touched;   // vertices whose state the last query changed
-    std::vector<int> heap;      // indexed 4-ary min-heap of vertices, keyed by dist
-    std::vector<int> position;  // position of each vertex in `heap`, -1 when absent
+  /// Cache-line aligned: the workspaces of concurrent threads sit side by side in a vector, and the
+  /// heap's size changes at every step (false sharing made two threads slower than one).
+  struct alignas(64) Workspace {
+    std::vector<Vertex_state> state;
+    std::vector<int> touched;     // vertices whose state the last query changed
+    std::vector<Heap_entry> heap; // indexed 4-ary min-heap of (dist, vertex), keys stored inline
   };
 
   /// One possible update when vertex v is accepted: target t of a face (v, o, t), with the
@@ -85,10 +96,8 @@ public:
   std::size_t number_of_vertices() const { return m_n; }
 
   void prepare(Workspace& w) const {
-    if(w.dist.size() != m_n) {
-      w.dist.assign(m_n, std::numeric_limits<double>::infinity());
-      w.accepted.assign(m_n, 0);
-      w.position.assign(m_n, -1);
+    if(w.state.size() != m_n) {
+      w.state.assign(m_n, Vertex_state{std::numeric_limits<double>::infinity(), far});
       w.touched.clear();
       w.heap.clear();
     }
@@ -100,51 +109,48 @@ public:
   template <typename Visit>
   void march(const std::vector<std::size_t>& sources, double radius, Workspace& w, Visit&& visit) const {
     prepare(w);
+    Vertex_state* state = w.state.data();
     // reset what the previous query touched
-    for(int v : w.touched) {
-      w.dist[static_cast<std::size_t>(v)] = std::numeric_limits<double>::infinity();
-      w.accepted[static_cast<std::size_t>(v)] = 0;
-      w.position[static_cast<std::size_t>(v)] = -1;
-    }
+    for(int v : w.touched) state[v] = Vertex_state{std::numeric_limits<double>::infinity(), far};
     w.touched.clear();
     w.heap.clear();
     for(std::size_t s : sources) {
       if(s >= m_n)
         throw Invalid_input(Mesh_defect::invalid_argument, "source vertex " + std::to_string(s) + " out of range (mesh has " +
                                                                std::to_string(m_n) + " vertices)");
-      if(w.position[s] < 0) {
+      if(state[s].slot == far) {
         w.touched.push_back(static_cast<int>(s));
-        w.dist[s] = 0.0;
-        push(w, static_cast<int>(s));
+        state[s].dist = 0.0;
+        push(w, static_cast<int>(s), 0.0);
       }
     }
-    double* dist = w.dist.data();
-    char* accepted = w.accepted.data();
     while(!w.heap.empty()) {
-      const int vi = w.heap.front();
-      const std::size_t v = static_cast<std::size_t>(vi);
-      const double dv = dist[v];
+      const std::size_t v = static_cast<std::size_t>(w.heap.front().v);
+      const double dv = w.heap.front().key;
       if(dv > radius) break;
       pop(w);
-      accepted[v] = 1;
+      state[v].slot = done;
       if constexpr(std::is_same<decltype(visit(v, dv)), bool>::value) {
         if(!visit(v, dv)) break;
       } else {
         visit(v, dv);
       }
-      for(int k = m_offset[v]; k < m_offset[v + 1]; ++k) {
-        const Update& u = m_updates[static_cast<std::size_t>(k)];
-        const std::size_t t = static_cast<std::size_t>(u.t);
-        if(accepted[t]) continue;
-        double d = dv + u.l_vt;
-        const std::size_t o = static_cast<std::size_t>(u.o);
+      const Update* end = m_updates.data() + m_offset[v + 1];
+      for(const Update* u = m_updates.data() + m_offset[v]; u != end; ++u) {
+        Vertex_state& st = state[u->t];
+        if(st.slot == done) continue;
+        double d = dv + u->l_vt;
         // (the edge update from o was applied when o was accepted)
-        if(accepted[o]) d = unfolded_update(dv, dist[o], u.c, u.inv2c, u.cx, u.cy, d);
-        if(d < dist[t]) {
-          if(std::isinf(dist[t])) w.touched.push_back(u.t);
-          dist[t] = d;
-          if(w.position[t] < 0) push(w, u.t);
-          else sift_up(w, static_cast<std::size_t>(w.position[t]));
+        const Vertex_state& so = state[u->o];
+        if(so.slot == done) d = unfolded_update(dv, so.dist, u->c, u->inv2c, u->cx, u->cy, d);
+        if(d < st.dist) {
+          st.dist = d;
+          if(st.slot == far) {
+            w.touched.push_back(u->t);
+            push(w, u->t, d);
+          } else {
+            sift_up(w, static_cast<std::size_t>(st.slot), u->t, d);
+          }
         }
       }
     }
@@ -168,45 +174,40 @@ public:
   }
 
 private:
-  // indexed 4-ary min-heap on w.dist
-  static void place(Workspace& w, std::size_t i, int v) {
-    w.heap[i] = v;
-    w.position[static_cast<std::size_t>(v)] = static_cast<int>(i);
+  // indexed 4-ary min-heap of (key, vertex) entries
+  static void place(Workspace& w, std::size_t i, const Heap_entry& e) {
+    w.heap[i] = e;
+    w.state[static_cast<std::size_t>(e.v)].slot = static_cast<int>(i);
   }
-  static void sift_up(Workspace& w, std::size_t i) {
-    const int v = w.heap[i];
-    const double key = w.dist[static_cast<std::size_t>(v)];
+  // moves vertex v, whose key decreased to `key`, up from slot i
+  static void sift_up(Workspace& w, std::size_t i, int v, double key) {
     while(i > 0) {
       const std::size_t parent = (i - 1) / 4;
-      const int p = w.heap[parent];
-      if(!(key < w.dist[static_cast<std::size_t>(p)])) break;
-      place(w, i, p);
+      if(!(key < w.heap[parent].key)) break;
+      place(w, i, w.heap[parent]);
       i = parent;
     }
-    place(w, i, v);
+    place(w, i, Heap_entry{key, v});
   }
-  static void push(Workspace& w, int v) {
-    w.heap.push_back(v);
-    sift_up(w, w.heap.size() - 1);
+  static void push(Workspace& w, int v, double key) {
+    w.heap.push_back(Heap_entry{key, v});
+    sift_up(w, w.heap.size() - 1, v, key);
   }
   static void pop(Workspace& w) {
-    w.position[static_cast<std::size_t>(w.heap.front())] = -1;
-    const int last = w.heap.back();
+    const Heap_entry last = w.heap.back();
     w.heap.pop_back();
     const std::size_t n = w.heap.size();
     if(n == 0) return;
-    const double key = w.dist[static_cast<std::size_t>(last)];
     std::size_t i = 0;
     for(;;) {
       const std::size_t first = 4 * i + 1;
       if(first >= n) break;
       std::size_t best = first;
-      double bk = w.dist[static_cast<std::size_t>(w.heap[first])];
-      for(std::size_t c = first + 1; c < std::min(first + 4, n); ++c) {
-        const double ck = w.dist[static_cast<std::size_t>(w.heap[c])];
-        if(ck < bk) { bk = ck; best = c; }
-      }
-      if(!(bk < key)) break;
+      double bk = w.heap[first].key;
+      const std::size_t end = std::min(first + 4, n);
+      for(std::size_t c = first + 1; c < end; ++c)
+        if(w.heap[c].key < bk) { bk = w.heap[c].key; best = c; }
+      if(!(bk < last.key)) break;
       place(w, i, w.heap[best]);
       i = best;
     }
