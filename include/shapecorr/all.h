@@ -11,4 +11,5 @@
 #include <shapecorr/mesh/primitives.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/sampling.h>
+#include <shapecorr/spectral.h>
 #endif

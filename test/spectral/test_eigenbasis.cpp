@@ -1,0 +1,131 @@
+// The Laplace-Beltrami eigenbasis: sphere eigenvalues l(l+1) with multiplicity 2l+1, M-orthonormal
+// eigenvectors, one zero eigenvalue per component, Spectra and dense paths agree, save/load, errors,
+// a user-supplied eigensolver through the named parameter.
+#include "spectral_test_helpers.h"
+
+#include <shapecorr/spectral/Laplace_beltrami_eigenbasis.h>
+
+#include <CGAL/Polygon_mesh_processing/transform.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <fstream>
+
+namespace SP = shapecorr::parameters;
+
+namespace {
+// A minimal model of LaplaceBeltramiEigensolver: dense, for small meshes.
+struct Dense_eigensolver {
+  int* calls = nullptr;
+  void solve(const Eigen::SparseMatrix<double>& L, const Eigen::VectorXd& mass, std::size_t k, Eigen::VectorXd& values,
+             Eigen::MatrixXd& vectors) const {
+    ++*calls;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(L), Eigen::MatrixXd(mass.asDiagonal()));
+    values = es.eigenvalues().head(static_cast<Eigen::Index>(k));
+    vectors = es.eigenvectors().leftCols(static_cast<Eigen::Index>(k));
+  }
+};
+} // namespace
+
+TEMPLATE_TEST_CASE("unit sphere: eigenvalues l(l+1) with multiplicity 2l+1", "[spectral][eigenbasis]", test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_icosphere(m, 3); // 642 vertices: Spectra's shift-invert Lanczos (above dense_size)
+  const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 36);
+  const Eigen::VectorXd& lambda = b.eigenvalues();
+  CHECK(std::abs(lambda[0]) < 1e-9);
+  CHECK(b.number_of_zero_eigenvalues() == 1);
+  std::size_t i = 1;
+  for(int l = 1; l <= 5; ++l)
+    for(int j = 0; j < 2 * l + 1; ++j, ++i) {
+      INFO("l = " << l << ", eigenvalue " << i << " = " << lambda[static_cast<Eigen::Index>(i)]);
+      // measured on 642 vertices: 0.2% (l = 1) to 4% (l = 5) below l(l+1)
+      CHECK(std::abs(lambda[static_cast<Eigen::Index>(i)] - l * (l + 1)) <= 0.05 * l * (l + 1));
+    }
+  // the gap between consecutive l is far larger than the spread inside one l
+  CHECK(lambda[4] - lambda[3] > 10 * (lambda[3] - lambda[1]));
+  // M-orthonormal
+  const Eigen::MatrixXd G = b.eigenvectors().transpose() * b.mass().asDiagonal() * b.eigenvectors();
+  CHECK((G - Eigen::MatrixXd::Identity(36, 36)).cwiseAbs().maxCoeff() < 1e-9);
+  // eigen-equation residuals
+  const Eigen::SparseMatrix<double> L = shapecorr::cotangent_laplacian(m);
+  const Eigen::MatrixXd R = L * b.eigenvectors() - b.mass().asDiagonal() * b.eigenvectors() * lambda.asDiagonal();
+  CHECK(R.cwiseAbs().maxCoeff() < 1e-8 * (1 + lambda.maxCoeff()) * b.mass().maxCoeff() * b.eigenvectors().cwiseAbs().maxCoeff());
+}
+
+TEST_CASE("Spectra and the dense path agree; a user eigensolver is used when given", "[spectral][eigenbasis]") {
+  test::Surface_mesh m;
+  test::make_ellipsoid(m, 3);
+  const auto lanczos = shapecorr::compute_laplace_beltrami_eigenbasis(m, 20);
+  shapecorr::Spectra_eigensolver<> dense_cfg;
+  dense_cfg.dense_size = 100000;
+  const auto dense = shapecorr::compute_laplace_beltrami_eigenbasis(m, 20, SP::eigensolver(dense_cfg));
+  CHECK((lanczos.eigenvalues() - dense.eigenvalues()).cwiseAbs().maxCoeff() < 1e-9 * dense.eigenvalues().maxCoeff());
+  // simple spectrum: eigenvectors agree up to sign
+  for(Eigen::Index j = 1; j < 20; ++j) {
+    const double c = std::abs(lanczos.eigenvectors().col(j).dot(lanczos.mass().asDiagonal() * dense.eigenvectors().col(j)));
+    CHECK(c == Approx(1.0).epsilon(1e-6));
+  }
+  int calls = 0;
+  Dense_eigensolver user{&calls};
+  const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 20, SP::eigensolver(user));
+  CHECK(calls == 1);
+  CHECK((b.eigenvalues() - dense.eigenvalues()).cwiseAbs().maxCoeff() < 1e-9 * dense.eigenvalues().maxCoeff());
+}
+
+TEMPLATE_TEST_CASE("each connected component contributes a zero eigenvalue", "[spectral][eigenbasis]", test::Surface_mesh, test::Polyhedron) {
+  TestType a, b;
+  shapecorr::make_icosphere(a, 3);
+  shapecorr::make_icosphere(b, 2);
+  test::transform_points(b, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(p + Eigen::Vector3d(5, 0, 0)); });
+  CGAL::copy_face_graph(b, a);
+  const auto basis = shapecorr::compute_laplace_beltrami_eigenbasis(a, 10);
+  CHECK(basis.number_of_zero_eigenvalues() == 2);
+  CHECK(basis.eigenvalues()[2] == Approx(2.0).epsilon(0.02)); // the unit sphere's l = 1 (the other has radius 1 too)
+}
+
+TEST_CASE("eigenbasis save and load round-trip; bad files are typed errors", "[spectral][eigenbasis][io]") {
+  test::Surface_mesh m;
+  test::make_ellipsoid(m, 2);
+  const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 12);
+  const std::string path = "test_eigenbasis_roundtrip.bin";
+  b.save(path);
+  const auto c = shapecorr::Laplace_beltrami_eigenbasis::load(path);
+  CHECK(c.eigenvalues() == b.eigenvalues());
+  CHECK(c.eigenvectors() == b.eigenvectors());
+  CHECK(c.mass() == b.mass());
+  { // truncate it
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+  }
+  CHECK_THROWS_AS(shapecorr::Laplace_beltrami_eigenbasis::load(path), shapecorr::Invalid_input);
+  { std::ofstream out(path, std::ios::trunc); out << "OFF\n3 1 0\n"; }
+  CHECK_THROWS_AS(shapecorr::Laplace_beltrami_eigenbasis::load(path), shapecorr::Invalid_input);
+  std::remove(path.c_str());
+  CHECK_THROWS_AS(shapecorr::Laplace_beltrami_eigenbasis::load("no/such/file.bin"), shapecorr::Invalid_input);
+}
+
+TEST_CASE("eigenbasis errors: k out of range, isolated vertex, solver failure", "[spectral][eigenbasis][errors]") {
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 1);
+  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 0), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 43), shapecorr::Invalid_input);
+  CHECK(shapecorr::compute_laplace_beltrami_eigenbasis(m, 42).number_of_eigenpairs() == 42); // all of them
+  test::Surface_mesh iso;
+  shapecorr::make_icosphere(iso, 1);
+  iso.add_vertex(test::Point(3, 3, 3));
+  try {
+    shapecorr::compute_laplace_beltrami_eigenbasis(iso, 5);
+    FAIL("no exception");
+  } catch(const shapecorr::Invalid_input& e) {
+    CHECK(e.defect() == shapecorr::Mesh_defect::isolated_vertex);
+  }
+  test::Surface_mesh big;
+  shapecorr::make_icosphere(big, 3);
+  shapecorr::Spectra_eigensolver<> hopeless;
+  hopeless.tolerance = 0;   // nothing ever converges to a zero tolerance
+  hopeless.max_iterations = 2;
+  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(big, 30, SP::eigensolver(hopeless)), shapecorr::Solver_failure);
+}
