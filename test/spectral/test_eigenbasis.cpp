@@ -73,6 +73,24 @@ TEST_CASE("Spectra and the dense path agree; a user eigensolver is used when giv
   CHECK((b.eigenvalues() - dense.eigenvalues()).cwiseAbs().maxCoeff() < 1e-9 * dense.eigenvalues().maxCoeff());
 }
 
+TEST_CASE("spectrum slicing returns the same pairs as one dense solve, clusters included", "[spectral][eigenbasis]") {
+  for(int shape = 0; shape < 2; ++shape) {
+    test::Surface_mesh m;
+    if(shape == 0) test::make_ellipsoid(m, 3); // simple spectrum
+    else shapecorr::make_icosphere(m, 3);      // clusters of 2l+1 nearly equal values
+    shapecorr::Spectra_eigensolver<> sliced;
+    sliced.slice_size = 15; // 64 pairs in five slices or more
+    shapecorr::Spectra_eigensolver<> dense_cfg;
+    dense_cfg.dense_size = 100000;
+    const auto a = shapecorr::compute_laplace_beltrami_eigenbasis(m, 64, SP::eigensolver(sliced));
+    const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 64, SP::eigensolver(dense_cfg));
+    INFO("shape " << shape << ": largest eigenvalue " << b.eigenvalues()[63]);
+    CHECK((a.eigenvalues() - b.eigenvalues()).cwiseAbs().maxCoeff() < 1e-8 * b.eigenvalues().maxCoeff());
+    const Eigen::MatrixXd G = a.eigenvectors().transpose() * a.mass().asDiagonal() * a.eigenvectors();
+    CHECK((G - Eigen::MatrixXd::Identity(64, 64)).cwiseAbs().maxCoeff() < 1e-8);
+  }
+}
+
 TEMPLATE_TEST_CASE("each connected component contributes a zero eigenvalue", "[spectral][eigenbasis]", test::Surface_mesh, test::Polyhedron) {
   TestType a, b;
   shapecorr::make_icosphere(a, 3);
