@@ -44,3 +44,16 @@ e = runs.get("BM_Exact_SingleSource/iterations:10")
 h = runs.get("BM_Heat_SingleSource")
 if e and h:
     print(f"exact single source: {ms(e):.1f} ms; heat single source: {ms(h):.2f} ms; ratio exact/heat {ms(e)/ms(h):.0f}x")
+# Spectral (bench_spectral): eigen-solve and descriptors separately, the ratio to one Spectra run.
+s = runs.get("BM_Eigenbasis300_Sliced/iterations:3")
+o = runs.get("BM_Reference_Eigenbasis300_OneSpectraRun/iterations:3")
+if s and o:
+    print(f"300 eigenpairs, sliced shift-invert: {ms(s)/1e3:.3f} s; one Spectra run: {ms(o)/1e3:.3f} s "
+          f"({ms(o)/ms(s):.1f}x); max |eigenvalue difference| {o['max_abs_eigenvalue_diff']:.2e}")
+for name in ("BM_HKS_AllVertices", "BM_WKS_AllVertices", "BM_SIHKS_AllVertices"):
+    d = runs.get(name)
+    if d:
+        print(f"{name}: {ms(d):.1f} ms, {ms(d) * 1e3 / d['vertices']:.2f} us per vertex")
+t = runs.get("BM_Total_EigenbasisHksWks/iterations:3")
+if t:
+    print(f"eigenbasis + HKS + WKS, all vertices: {ms(t)/1e3:.3f} s")

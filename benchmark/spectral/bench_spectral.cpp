@@ -68,7 +68,7 @@ void descriptor(benchmark::State& state, F&& f) {
   Fixture& fx = fixture();
   for(auto _ : state) benchmark::DoNotOptimize(f(fx.basis).data());
   state.counters["vertices"] = static_cast<double>(fx.mesh.number_of_vertices());
-  state.counters["us_per_vertex"] = benchmark::Counter(static_cast<double>(fx.mesh.number_of_vertices()),
+  state.counters["seconds_per_vertex"] = benchmark::Counter(static_cast<double>(fx.mesh.number_of_vertices()),
                                                        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 void BM_HKS_AllVertices(benchmark::State& state) { descriptor(state, [](const auto& b) { return shapecorr::heat_kernel_signature_matrix(b); }); }
