@@ -12,4 +12,5 @@
 #include <shapecorr/parameters.h>
 #include <shapecorr/sampling.h>
 #include <shapecorr/spectral.h>
+#include <shapecorr/descriptors.h>
 #endif

@@ -5,6 +5,7 @@
 #ifndef SHAPECORR_GEODESICS_INTERNAL_WITH_GEODESIC_ENGINE_H
 #define SHAPECORR_GEODESICS_INTERNAL_WITH_GEODESIC_ENGINE_H
 
+#include <shapecorr/internal/progress.h>
 #include <shapecorr/geodesics/Exact_geodesics.h>
 #include <shapecorr/geodesics/Fast_marching_geodesics.h>
 #include <shapecorr/geodesics/Heat_method_geodesics.h>
@@ -39,14 +40,6 @@ decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameter
     Heat_method_geodesics<TriangleMesh> engine(tm, np);
     return fn(engine);
   }
-}
-
-template <typename NamedParameters>
-std::function<void(std::size_t, std::size_t)> progress_of(const NamedParameters& np) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  return choose_parameter(get_parameter(np, internal_np::progress_callback),
-                          std::function<void(std::size_t, std::size_t)>());
 }
 
 } // namespace internal

@@ -1,0 +1,14 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file descriptors.h
+/// The rigid descriptors of thesis chapter 3: spin image, face-based spin image, improved spin
+/// image, Spin Contour, the oriented-point axes, the contour L1 distance and descriptor matching.
+#ifndef SHAPECORR_DESCRIPTORS_H
+#define SHAPECORR_DESCRIPTORS_H
+
+#include <shapecorr/descriptors/Spin_contour.h>
+#include <shapecorr/descriptors/Spin_descriptors.h>
+#include <shapecorr/descriptors/Spin_image.h>
+#include <shapecorr/descriptors/match_descriptors.h>
+
+#endif

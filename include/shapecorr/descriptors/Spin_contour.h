@@ -1,0 +1,150 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Spin_contour.h
+/// The Spin Contour value type (thesis chapter 3, also the Geodesic Spin Contour of chapter 4) and
+/// the symmetric normalized L1 contour distance.
+#ifndef SHAPECORR_DESCRIPTORS_SPIN_CONTOUR_H
+#define SHAPECORR_DESCRIPTORS_SPIN_CONTOUR_H
+
+#include <shapecorr/exceptions.h>
+#include <shapecorr/internal/kd_tree.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace shapecorr {
+
+/// \ingroup PkgShapeCorrDescriptors
+/// A spin contour: a set of 2-D points (alpha, beta) lying on `rows` horizontal lines
+/// `beta_r = 1 - (r + 1/2) 2 / rows` (row 0 on top), coordinates normalized by the support length
+/// L: alpha in [0, 1], beta in [-1, 1]. The points of a row are kept sorted by alpha.
+class Spin_contour {
+public:
+  Spin_contour() = default;
+  explicit Spin_contour(std::size_t rows, double support_length = 1.0)
+    : m_rows(rows), m_support(support_length), m_begin(rows + 1, 0u) {}
+
+  std::size_t rows() const { return m_rows; }
+  double support_length() const { return m_support; }
+  /// Number of points.
+  std::size_t size() const { return m_alpha.size(); }
+  bool empty() const { return m_alpha.empty(); }
+  /// Normalized beta of row r.
+  double beta(std::size_t r) const { return 1.0 - (static_cast<double>(r) + 0.5) * 2.0 / static_cast<double>(m_rows); }
+  /// The alphas of row r, ascending: [row_begin(r), row_end(r)) of `alphas()`.
+  std::size_t row_begin(std::size_t r) const { return m_begin[r]; }
+  std::size_t row_end(std::size_t r) const { return m_begin[r + 1]; }
+  const std::vector<float>& alphas() const { return m_alpha; }
+  /// All points as (alpha, beta), rows top to bottom.
+  std::vector<std::array<double, 2>> points() const {
+    std::vector<std::array<double, 2>> p;
+    p.reserve(size());
+    for(std::size_t r = 0; r < m_rows; ++r)
+      for(std::size_t i = row_begin(r); i < row_end(r); ++i) p.push_back({static_cast<double>(m_alpha[i]), beta(r)});
+    return p;
+  }
+  /// Appends the (sorted) alphas of the next row; rows are appended in order 0, 1, ...
+  template <typename Iterator>
+  void append_row(std::size_t r, Iterator first, Iterator last) {
+    m_alpha.insert(m_alpha.end(), first, last);
+    m_begin[r + 1] = static_cast<std::uint32_t>(m_alpha.size());
+  }
+
+private:
+  std::size_t m_rows = 0;
+  double m_support = 1.0;
+  std::vector<std::uint32_t> m_begin{0u};
+  std::vector<float> m_alpha;
+};
+
+namespace internal {
+// For each point of row r of X, the squared distance to the nearest point of rows s of Y, updated
+// into best[]: one merge of two sorted lists.
+inline void merge_row_distances(const float* x, std::size_t nx, const float* y, std::size_t ny, double dbeta2, double* best) {
+  if(ny == 0) return;
+  std::size_t j = 0;
+  for(std::size_t i = 0; i < nx; ++i) {
+    const float a = x[i];
+    while(j + 1 < ny && y[j + 1] <= a) ++j;
+    double d = std::abs(static_cast<double>(a) - y[j]);
+    if(j + 1 < ny) d = std::min(d, static_cast<double>(y[j + 1]) - a);
+    const double d2 = dbeta2 + d * d;
+    if(d2 < best[i]) best[i] = d2;
+  }
+}
+
+// Sum over the points of X of the distance to the nearest point of Y (both row-structured).
+inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, std::vector<double>& best) {
+  const std::size_t R = X.rows();
+  const double h = 2.0 / static_cast<double>(R);
+  const float* xa = X.alphas().data();
+  const float* ya = Y.alphas().data();
+  double sum = 0;
+  for(std::size_t r = 0; r < R; ++r) {
+    const std::size_t b = X.row_begin(r), nx = X.row_end(r) - b;
+    if(nx == 0) continue;
+    best.assign(nx, std::numeric_limits<double>::infinity());
+    double worst = std::numeric_limits<double>::infinity();
+    for(std::size_t k = 0; k < R; ++k) { // rows r, r-1, r+1, r-2, r+2, ...: stop when the row gap exceeds every best
+      const double dbeta = h * static_cast<double>(k);
+      if(dbeta * dbeta >= worst) break;
+      for(int side = (k == 0 ? 1 : -1); side <= 1; side += 2) {
+        const long s = static_cast<long>(r) + side * static_cast<long>(k);
+        if(s < 0 || s >= static_cast<long>(R)) continue;
+        const std::size_t yb = Y.row_begin(static_cast<std::size_t>(s)), ny = Y.row_end(static_cast<std::size_t>(s)) - yb;
+        merge_row_distances(xa + b, nx, ya + yb, ny, dbeta * dbeta, best.data());
+      }
+      worst = *std::max_element(best.begin(), best.end());
+    }
+    for(double d2 : best) sum += std::sqrt(d2);
+  }
+  return sum;
+}
+} // namespace internal
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The symmetric normalized L1 distance of two spin contours (thesis section 3.4):
+/// `L1(X, Y) = (sum_{x in X} d(x, Y) + sum_{y in Y} d(y, X)) / (|X| + |Y|)`, d the Euclidean distance
+/// to the nearest point of the other set, in normalized coordinates. Exact; the points of a contour
+/// lie on its rows, so each nearest point is found by merging sorted rows outwards from the row of x
+/// until the row gap exceeds the distances found (for general point sets see
+/// `point_set_l1_distance`). 0 for two empty contours, +infinity when only one is empty.
+/// \throws Invalid_input when the numbers of rows differ
+inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y) {
+  if(X.rows() != Y.rows())
+    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
+                                                           std::to_string(Y.rows()) + " rows");
+  if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  thread_local std::vector<double> best;
+  const double s = internal::directed_contour_sum(X, Y, best) + internal::directed_contour_sum(Y, X, best);
+  return s / static_cast<double>(X.size() + Y.size());
+}
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The distance functor of spin contours for the matchers (`contour_l1_distance`).
+struct Contour_l1_distance {
+  double operator()(const Spin_contour& a, const Spin_contour& b) const { return contour_l1_distance(a, b); }
+};
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The same symmetric normalized L1 distance for any two finite 2-D point sets (ranges of
+/// `std::array<double, 2>`), by kd-trees: O(m log m). 0 for two empty sets, +infinity when one is.
+template <typename PointRange1, typename PointRange2>
+double point_set_l1_distance(const PointRange1& X, const PointRange2& Y) {
+  std::vector<std::array<double, 2>> x(X.begin(), X.end()), y(Y.begin(), Y.end());
+  if(x.empty() || y.empty()) return x.empty() && y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  const internal::Kd_tree<2> tx(x), ty(y);
+  double s = 0;
+  for(const auto& p : x) s += std::sqrt(ty.nearest(p).second);
+  for(const auto& p : y) s += std::sqrt(tx.nearest(p).second);
+  return s / static_cast<double>(x.size() + y.size());
+}
+
+} // namespace shapecorr
+
+#endif

@@ -1,0 +1,328 @@
+// Rigid descriptors (thesis chapter 3): analytic contours of a plane patch and a cylinder, rigid
+// motion invariance of every descriptor and axis, resampling robustness of the Spin Contour, the
+// L1 contour distance's properties and its agreement with the kd-tree version, axis fallbacks,
+// matching, errors; over Surface_mesh and Polyhedron_3.
+#include "spectral/spectral_test_helpers.h"
+#include "test_meshes.h"
+
+#include <shapecorr/descriptors.h>
+#include <shapecorr/mesh/primitives.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace SP = shapecorr::parameters;
+using shapecorr::Oriented_point;
+using shapecorr::Spin_axis;
+
+namespace {
+
+// A sphere with a smooth, non-symmetric radial bump field (fixed seed).
+template <typename Mesh>
+void make_bumpy_sphere(Mesh& m, int subdivisions) {
+  shapecorr::make_icosphere(m, subdivisions);
+  test::transform_points(m, [](const Eigen::Vector3d& p) {
+    const double r = 1.0 + 0.15 * std::sin(3 * p.x() + 1) * std::cos(2 * p.y()) + 0.1 * p.z() * p.z() * p.x() + 0.05 * p.y() +
+                     0.08 * p.z() * p.z() * p.z() + 0.06 * p.x() * p.z();
+    return Eigen::Vector3d(r * p);
+  });
+}
+
+// An open tube of radius rho around z, z in [-H/2, H/2], N sides, S stacks.
+template <typename Mesh>
+void make_tube(Mesh& m, double rho, double H, int N, int S) {
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  for(int s = 0; s <= S; ++s)
+    for(int i = 0; i < N; ++i) {
+      const double a = 2 * CGAL_PI * i / N;
+      P.push_back({rho * std::cos(a), rho * std::sin(a), -H / 2 + H * s / S});
+    }
+  auto id = [&](int s, int i) { return static_cast<std::size_t>(s * N + (i % N)); };
+  for(int s = 0; s < S; ++s)
+    for(int i = 0; i < N; ++i) {
+      T.push_back({id(s, i), id(s, i + 1), id(s + 1, i + 1)});
+      T.push_back({id(s, i), id(s + 1, i + 1), id(s + 1, i)});
+    }
+  shapecorr::internal::soup_to_mesh(P, T, m);
+}
+
+template <typename Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor vertex_at(const Mesh& m, std::size_t i) {
+  return test::vertices_in_index_order(m)[i];
+}
+
+bool same_contour(const shapecorr::Spin_contour& a, const shapecorr::Spin_contour& b, double tol) {
+  if(a.rows() != b.rows()) return false;
+  for(std::size_t r = 0; r < a.rows(); ++r) {
+    if(a.row_end(r) - a.row_begin(r) != b.row_end(r) - b.row_begin(r)) return false;
+    for(std::size_t i = a.row_begin(r), j = b.row_begin(r); i < a.row_end(r); ++i, ++j)
+      if(std::abs(a.alphas()[i] - b.alphas()[j]) > tol) return false;
+  }
+  return true;
+}
+
+double image_difference(const shapecorr::Spin_image& a, const shapecorr::Spin_image& b) {
+  double d = 0, s = 0;
+  for(std::size_t i = 0; i < a.values().size(); ++i) {
+    d += std::abs(a.values()[i] - b.values()[i]);
+    s += std::abs(a.values()[i]);
+  }
+  return d / std::max(s, 1e-300);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Spin Contour of a flat square seen along an in-plane axis is the rectangle [0,1] x [-1,1]", "[descriptors][spin-contour]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_grid(m, 10, 10, 2.0, 2.0); // [0,2]^2, z = 0
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::support_length(2.0).image_rows(std::size_t(120)).image_columns(std::size_t(60)));
+  Oriented_point op;
+  op.point = Eigen::Vector3d(1, 1, 0);
+  op.axis = Eigen::Vector3d::UnitX(); // beta = x - 1 in [-1, 1], alpha = |y - 1| in [0, 1]
+  const shapecorr::Spin_contour c = sd.spin_contour(op);
+  // Rows with |beta_r| <= 1 / L: r = 30 ... 89; every one holds the interval [0, 0.5] (normalized).
+  std::size_t filled = 0;
+  for(std::size_t r = 0; r < c.rows(); ++r) {
+    const std::size_t k = c.row_end(r) - c.row_begin(r);
+    if(std::abs(c.beta(r)) > 0.5) {
+      CHECK(k == 0);
+      continue;
+    }
+    ++filled;
+    REQUIRE(k >= 2);
+    CHECK(c.alphas()[c.row_begin(r)] == Approx(0.0).margin(1e-6));
+    CHECK(c.alphas()[c.row_end(r) - 1] == Approx(0.5).epsilon(1e-6));
+    // Closing: the first and last rows carry the 30 column samples of [0, 0.5]; inner rows only their ends.
+    CHECK(k == ((r == 30 || r == 89) ? 32u : 2u));
+  }
+  CHECK(filled == 60);
+  CHECK(c.size() == 58 * 2 + 2 * 32);
+}
+
+TEMPLATE_TEST_CASE("Spin Contour of a tube seen from its axis is two vertical lines of width rho(1 - cos(pi/N))", "[descriptors][spin-contour]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  const double rho = 0.5, H = 1.0;
+  const int N = 32;
+  make_tube(m, rho, H, N, 7);
+  const double L = 1.0;
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::support_length(L).image_rows(std::size_t(41)).image_columns(std::size_t(50)));
+  Oriented_point op; // centre of the tube, along its axis
+  op.point = Eigen::Vector3d::Zero();
+  op.axis = Eigen::Vector3d::UnitZ();
+  const shapecorr::Spin_contour c = sd.spin_contour(op);
+  const double inner = rho * std::cos(CGAL_PI / N) / L, outer = rho / L;
+  std::size_t filled = 0;
+  for(std::size_t r = 0; r < c.rows(); ++r) {
+    const bool inside = std::abs(c.beta(r)) <= H / 2 / L;
+    const std::size_t k = c.row_end(r) - c.row_begin(r);
+    CHECK((k > 0) == inside);
+    if(!inside) continue;
+    ++filled;
+    CHECK(c.alphas()[c.row_begin(r)] == Approx(inner).epsilon(1e-5));
+    CHECK(c.alphas()[c.row_end(r) - 1] == Approx(outer).epsilon(1e-5));
+    for(std::size_t i = c.row_begin(r); i < c.row_end(r); ++i) CHECK(c.alphas()[i] >= inner - 1e-5);
+  }
+  CHECK(filled == 21); // beta_r = 1 - (r + 1/2) 2/41 within [-1/2, 1/2]: r = 10 ... 30
+}
+
+TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for every axis", "[descriptors][invariance]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType a, b;
+  make_bumpy_sphere(a, 3);
+  make_bumpy_sphere(b, 3);
+  const Eigen::Isometry3d T = test::random_rigid_motion(11);
+  test::transform_points(b, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(T * p); });
+  for(Spin_axis axis : {Spin_axis::NORMAL, Spin_axis::CENTRAL_DIRECTION, Spin_axis::LOCAL_CENTRAL_DIRECTION, Spin_axis::SHOT_LRF}) {
+    INFO("axis " << static_cast<int>(axis));
+    const auto np = SP::spin_axis(axis).support_length(1.5).image_rows(std::size_t(40)).image_columns(std::size_t(20)).central_radius(0.6).lrf_radius(0.5);
+    const shapecorr::Spin_descriptors<TestType> da(a, np), db(b, np);
+    for(std::size_t i : {0u, 17u, 200u, 411u}) {
+      const Oriented_point pa = da.oriented_point(vertex_at(a, i)), pb = db.oriented_point(vertex_at(b, i));
+      CHECK((T.linear() * pa.axis - pb.axis).norm() < 1e-9);
+      CHECK(pa.fell_back_to_normal == pb.fell_back_to_normal);
+      CHECK(same_contour(da.spin_contour(pa), db.spin_contour(pb), 1e-5));
+      CHECK(image_difference(da.spin_image(pa), db.spin_image(pb)) < 1e-5);
+      CHECK(image_difference(da.face_spin_image(pa), db.face_spin_image(pb)) < 1e-5);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Spin Contour is robust to resampling; the face-based image tracks area", "[descriptors][resampling]",
+                   test::Surface_mesh, test::Polyhedron) {
+  // The same torus at two resolutions: vertex (0, 0) is the same point on both.
+  TestType coarse, fine;
+  shapecorr::make_torus(coarse, 2.0, 0.7, 48, 18);
+  shapecorr::make_torus(fine, 2.0, 0.7, 96, 36);
+  const auto np = SP::spin_axis(Spin_axis::CENTRAL_DIRECTION).support_length(3.0).image_rows(std::size_t(60)).image_columns(std::size_t(30));
+  const shapecorr::Spin_descriptors<TestType> dc(coarse, np), df(fine, np);
+  // Same point, and for contrast points a quarter tube around (vertex (0, 4) of the coarse one,
+  // (0, 8) of the fine one, also the same point) and a different place.
+  const auto sc0 = dc.spin_contour(dc.oriented_point(vertex_at(coarse, 0)));
+  const auto sf0 = df.spin_contour(df.oriented_point(vertex_at(fine, 0)));
+  const auto sc4 = dc.spin_contour(dc.oriented_point(vertex_at(coarse, 4)));
+  const auto sf8 = df.spin_contour(df.oriented_point(vertex_at(fine, 8)));
+  const double same0 = shapecorr::contour_l1_distance(sc0, sf0), same4 = shapecorr::contour_l1_distance(sc4, sf8);
+  const double other = shapecorr::contour_l1_distance(sc0, sf8);
+  INFO("same point " << same0 << ", " << same4 << ", other point " << other);
+  CHECK(same0 < 0.01);
+  CHECK(same4 < 0.01);
+  CHECK(other > 5 * std::max(same0, same4));
+  // Face-based images integrate area: the totals agree with the area inside the support.
+  const auto fc = dc.face_spin_image(dc.oriented_point(vertex_at(coarse, 0)));
+  const auto ff = df.face_spin_image(df.oriented_point(vertex_at(fine, 0)));
+  CHECK(image_difference(fc, ff) < 0.15);
+  CHECK(shapecorr::spin_image_correlation(fc, ff).first > 0.9);
+}
+
+TEST_CASE("contour L1 distance: zero on identical, symmetric, equal to the kd-tree version", "[descriptors][contour-distance]") {
+  test::Surface_mesh m;
+  make_bumpy_sphere(m, 3);
+  const shapecorr::Spin_descriptors<test::Surface_mesh> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
+  std::vector<shapecorr::Spin_contour> c;
+  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  for(std::size_t i = 0; i < c.size(); ++i) {
+    REQUIRE(c[i].size() > 50);
+    CHECK(shapecorr::contour_l1_distance(c[i], c[i]) == 0.0);
+    for(std::size_t j = 0; j < c.size(); ++j) {
+      const double d = shapecorr::contour_l1_distance(c[i], c[j]);
+      CHECK(d == Approx(shapecorr::contour_l1_distance(c[j], c[i])).epsilon(1e-12));
+      CHECK(d == Approx(shapecorr::point_set_l1_distance(c[i].points(), c[j].points())).epsilon(1e-6));
+      if(i != j) CHECK(d > 0);
+    }
+  }
+  shapecorr::Spin_contour empty(120);
+  CHECK(shapecorr::contour_l1_distance(empty, empty) == 0.0);
+  CHECK(std::isinf(shapecorr::contour_l1_distance(empty, c[0])));
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Spin_contour(60), c[0]), shapecorr::Invalid_input);
+}
+
+TEMPLATE_TEST_CASE("axes fall back to the normal where they are undefined", "[descriptors][axes]", test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_grid(m, 20, 20, 2.0, 2.0); // flat: centroid (1, 1, 0) is vertex (10, 10)
+  const auto centre = vertex_at(m, 10 * 21 + 10), corner = vertex_at(m, 0), edge_mid = vertex_at(m, 10);
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::central_radius(0.3).lrf_radius(0.3));
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  auto at = [&](auto v, Spin_axis a) { return sd.oriented_point(v, a); };
+  CHECK(at(centre, Spin_axis::NORMAL).axis.isApprox(z, 1e-12));
+  // global centre direction at the centroid itself: undefined
+  CHECK(at(centre, Spin_axis::CENTRAL_DIRECTION).fell_back_to_normal);
+  CHECK(at(centre, Spin_axis::CENTRAL_DIRECTION).axis.isApprox(z, 1e-12));
+  const Oriented_point c0 = at(corner, Spin_axis::CENTRAL_DIRECTION);
+  CHECK_FALSE(c0.fell_back_to_normal);
+  CHECK(c0.axis.isApprox(Eigen::Vector3d(1, 1, 0).normalized(), 1e-9));
+  // local centre of a full disc: undefined; at a border it points inwards
+  CHECK(at(centre, Spin_axis::LOCAL_CENTRAL_DIRECTION).fell_back_to_normal);
+  const Oriented_point e = at(edge_mid, Spin_axis::LOCAL_CENTRAL_DIRECTION);
+  CHECK_FALSE(e.fell_back_to_normal);
+  CHECK(e.axis.isApprox(Eigen::Vector3d::UnitY(), 1e-6));
+  // SHOT frame on a flat, isotropic neighbourhood: undefined (repeated eigenvalue) or the normal
+  const Oriented_point s = at(centre, Spin_axis::SHOT_LRF);
+  CHECK(std::abs(s.axis.dot(z)) == Approx(1.0).epsilon(1e-9));
+}
+
+TEMPLATE_TEST_CASE("SHOT frame: orthonormal, right-handed, third axis along the normal of a curved patch", "[descriptors][axes]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  make_bumpy_sphere(m, 4);
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::lrf_radius(0.25));
+  std::size_t aligned = 0, tried = 0;
+  for(std::size_t i = 0; i < num_vertices(m); i += 97) {
+    const auto v = vertex_at(m, i);
+    Eigen::Matrix3d F;
+    if(!sd.shot_frame(sd.oriented_point(v).point, F)) continue;
+    ++tried;
+    CHECK((F.transpose() * F - Eigen::Matrix3d::Identity()).norm() < 1e-9);
+    CHECK(F.determinant() == Approx(1.0).epsilon(1e-9));
+    if(std::abs(F.col(2).dot(sd.oriented_point(v, Spin_axis::NORMAL).axis)) > 0.95) ++aligned;
+  }
+  REQUIRE(tried > 20);
+  CHECK(aligned == tried);
+}
+
+TEMPLATE_TEST_CASE("surface points: a face location at a corner is that vertex; face normal axis", "[descriptors][surface-points]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  make_bumpy_sphere(m, 2);
+  const shapecorr::Spin_descriptors<TestType> sd(m);
+  const auto f = *faces(m).begin();
+  const auto h = halfedge(f, m);
+  const auto v0 = target(prev(h, m), m); // CGAL's first barycentric coordinate is source(halfedge(f))
+  typename shapecorr::Spin_descriptors<TestType>::Face_location loc(f, {{1.0, 0.0, 0.0}});
+  const Oriented_point op = sd.oriented_point(loc);
+  CHECK((op.point - sd.oriented_point(v0).point).norm() < 1e-12);
+  // the face normal is orthogonal to its edges
+  const auto p = get(CGAL::vertex_point, m);
+  const auto a = get(p, source(h, m)), b = get(p, target(h, m));
+  CHECK(std::abs(op.axis.dot(Eigen::Vector3d(b.x() - a.x(), b.y() - a.y(), b.z() - a.z()))) < 1e-12);
+}
+
+TEMPLATE_TEST_CASE("matching descriptors of a moved copy finds every vertex itself", "[descriptors][matching]", test::Surface_mesh, test::Polyhedron) {
+  TestType a, b;
+  make_bumpy_sphere(a, 2);
+  make_bumpy_sphere(b, 2);
+  const Eigen::Isometry3d T = test::random_rigid_motion(3);
+  test::transform_points(b, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(T * p); });
+  const auto np = SP::spin_axis(Spin_axis::CENTRAL_DIRECTION).image_rows(std::size_t(40)).image_columns(std::size_t(20));
+  auto ca = get(CGAL::dynamic_vertex_property_t<shapecorr::Spin_contour>(), a);
+  auto cb = get(CGAL::dynamic_vertex_property_t<shapecorr::Spin_contour>(), b);
+  shapecorr::compute_spin_contours(a, vertices(a), ca, np);
+  shapecorr::compute_spin_contours(b, vertices(b), cb, np);
+  const auto va = test::vertices_in_index_order(a), vb = test::vertices_in_index_order(b);
+  std::vector<shapecorr::Spin_contour> sa, sb;
+  for(std::size_t i = 0; i < va.size(); i += 7) sa.push_back(get(ca, va[i]));
+  for(auto v : vb) sb.push_back(get(cb, v));
+  const auto matches = shapecorr::match_descriptors(sa, sb, shapecorr::Contour_l1_distance());
+  std::size_t correct = 0;
+  for(const auto& mt : matches) {
+    CHECK(mt.distance <= mt.second_distance);
+    CHECK(mt.ratio() <= 1.0);
+    correct += mt.target == 7 * mt.source;
+  }
+  CHECK(correct == matches.size());
+  // The same through spin images and their correlation distance.
+  auto ia = get(CGAL::dynamic_vertex_property_t<shapecorr::Spin_image>(), a);
+  auto ib = get(CGAL::dynamic_vertex_property_t<shapecorr::Spin_image>(), b);
+  shapecorr::compute_face_spin_images(a, vertices(a), ia, np);
+  shapecorr::compute_face_spin_images(b, vertices(b), ib, np);
+  std::vector<shapecorr::Spin_image> ja, jb;
+  for(std::size_t i = 0; i < va.size(); i += 7) ja.push_back(get(ia, va[i]));
+  for(auto v : vb) jb.push_back(get(ib, v));
+  correct = 0;
+  for(const auto& mt : shapecorr::match_descriptors(ja, jb, shapecorr::Spin_image_distance())) correct += mt.target == 7 * mt.source;
+  CHECK(correct == ja.size());
+}
+
+TEST_CASE("spin image comparison: correlation of proportional images is 1, similarity ranks", "[descriptors][spin-image]") {
+  shapecorr::Spin_image a(4, 3, 1.0), b(4, 3, 1.0), c(4, 3, 1.0);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(0.1f, 1.0f);
+  for(std::size_t i = 0; i < 12; ++i) {
+    a.values()[i] = u(rng);
+    b.values()[i] = 2.5f * a.values()[i];
+    c.values()[i] = u(rng);
+  }
+  CHECK(shapecorr::spin_image_correlation(a, b).first == Approx(1.0).epsilon(1e-6));
+  CHECK(shapecorr::spin_image_correlation(a, b).second == 12u);
+  CHECK(shapecorr::Spin_image_distance()(a, b) == Approx(0.0).margin(1e-6));
+  CHECK(shapecorr::spin_image_similarity(a, b) > shapecorr::spin_image_similarity(a, c));
+  CHECK_THROWS_AS(shapecorr::spin_image_correlation(a, shapecorr::Spin_image(3, 3, 1.0)), shapecorr::Invalid_input);
+}
+
+TEST_CASE("spin descriptors: bad parameters and meshes are typed errors", "[descriptors][errors]") {
+  test::Surface_mesh m;
+  shapecorr::make_icosphere(m, 1);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::support_length(-1.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::image_rows(std::size_t(1))), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::lrf_radius(0.0)), shapecorr::Invalid_input);
+  test::Surface_mesh empty;
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(empty), shapecorr::Invalid_input);
+  test::Surface_mesh bad;
+  shapecorr::make_icosphere(bad, 1);
+  put(get(CGAL::vertex_point, bad), *vertices(bad).begin(), test::Point(std::nan(""), 0, 0));
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(bad), shapecorr::Invalid_input);
+}
