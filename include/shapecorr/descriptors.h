@@ -10,5 +10,6 @@
 #include <shapecorr/descriptors/Spin_descriptors.h>
 #include <shapecorr/descriptors/Spin_image.h>
 #include <shapecorr/descriptors/match_descriptors.h>
+#include <shapecorr/descriptors/write_spin_descriptor_plot.h>
 
 #endif

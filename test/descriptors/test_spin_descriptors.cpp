@@ -326,3 +326,15 @@ TEST_CASE("spin descriptors: bad parameters and meshes are typed errors", "[desc
   put(get(CGAL::vertex_point, bad), *vertices(bad).begin(), test::Point(std::nan(""), 0, 0));
   CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(bad), shapecorr::Invalid_input);
 }
+
+TEST_CASE("contour L1 distance with a bound: exact below it, above it when exceeded", "[descriptors][contour-distance]") {
+  test::Surface_mesh m;
+  make_bumpy_sphere(m, 3);
+  const shapecorr::Spin_descriptors<test::Surface_mesh> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
+  const auto a = sd.spin_contour(sd.oriented_point(vertex_at(m, 3))), b = sd.spin_contour(sd.oriented_point(vertex_at(m, 400)));
+  const double d = shapecorr::contour_l1_distance(a, b);
+  REQUIRE(d > 0);
+  CHECK(shapecorr::contour_l1_distance(a, b, 2 * d) == d);
+  CHECK(shapecorr::contour_l1_distance(a, b, 0.5 * d) > 0.5 * d);
+  CHECK(shapecorr::contour_l1_distance(a, b, 0.0) > 0.0);
+}

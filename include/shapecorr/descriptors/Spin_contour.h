@@ -63,45 +63,38 @@ private:
 };
 
 namespace internal {
-// For each point of row r of X, the squared distance to the nearest point of rows s of Y, updated
-// into best[]: one merge of two sorted lists.
-inline void merge_row_distances(const float* x, std::size_t nx, const float* y, std::size_t ny, double dbeta2, double* best) {
-  if(ny == 0) return;
-  std::size_t j = 0;
-  for(std::size_t i = 0; i < nx; ++i) {
-    const float a = x[i];
-    while(j + 1 < ny && y[j + 1] <= a) ++j;
-    double d = std::abs(static_cast<double>(a) - y[j]);
-    if(j + 1 < ny) d = std::min(d, static_cast<double>(y[j + 1]) - a);
-    const double d2 = dbeta2 + d * d;
-    if(d2 < best[i]) best[i] = d2;
-  }
+// Squared distance from a to the nearest of the sorted values [y, y + ny) (infinity when empty).
+inline double nearest_in_row2(const float* y, std::size_t ny, float a) {
+  if(ny == 0) return std::numeric_limits<double>::infinity();
+  const float* it = std::lower_bound(y, y + ny, a);
+  double d = std::numeric_limits<double>::infinity();
+  if(it != y + ny) d = static_cast<double>(*it) - a;
+  if(it != y) d = std::min(d, static_cast<double>(a) - *(it - 1));
+  return d * d;
 }
 
-// Sum over the points of X of the distance to the nearest point of Y (both row-structured).
-inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, std::vector<double>& best) {
+// Sum over the points of X of the distance to the nearest point of Y (both row-structured): for
+// each point, rows of Y outwards from its own until the row gap exceeds the best distance found.
+// Stops early (returning a value >= bound) once the sum exceeds `bound`.
+inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, double bound) {
   const std::size_t R = X.rows();
   const double h = 2.0 / static_cast<double>(R);
   const float* xa = X.alphas().data();
   const float* ya = Y.alphas().data();
   double sum = 0;
   for(std::size_t r = 0; r < R; ++r) {
-    const std::size_t b = X.row_begin(r), nx = X.row_end(r) - b;
-    if(nx == 0) continue;
-    best.assign(nx, std::numeric_limits<double>::infinity());
-    double worst = std::numeric_limits<double>::infinity();
-    for(std::size_t k = 0; k < R; ++k) { // rows r, r-1, r+1, r-2, r+2, ...: stop when the row gap exceeds every best
-      const double dbeta = h * static_cast<double>(k);
-      if(dbeta * dbeta >= worst) break;
-      for(int side = (k == 0 ? 1 : -1); side <= 1; side += 2) {
-        const long s = static_cast<long>(r) + side * static_cast<long>(k);
-        if(s < 0 || s >= static_cast<long>(R)) continue;
-        const std::size_t yb = Y.row_begin(static_cast<std::size_t>(s)), ny = Y.row_end(static_cast<std::size_t>(s)) - yb;
-        merge_row_distances(xa + b, nx, ya + yb, ny, dbeta * dbeta, best.data());
+    for(std::size_t i = X.row_begin(r); i < X.row_end(r); ++i) {
+      const float a = xa[i];
+      double best = nearest_in_row2(ya + Y.row_begin(r), Y.row_end(r) - Y.row_begin(r), a);
+      for(std::size_t k = 1; k < R; ++k) {
+        const double gap2 = (h * static_cast<double>(k)) * (h * static_cast<double>(k));
+        if(gap2 >= best) break;
+        if(r >= k) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r - k), Y.row_end(r - k) - Y.row_begin(r - k), a));
+        if(r + k < R) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r + k), Y.row_end(r + k) - Y.row_begin(r + k), a));
       }
-      worst = *std::max_element(best.begin(), best.end());
+      sum += std::sqrt(best);
     }
-    for(double d2 : best) sum += std::sqrt(d2);
+    if(sum > bound) return sum;
   }
   return sum;
 }
@@ -111,24 +104,31 @@ inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y,
 /// The symmetric normalized L1 distance of two spin contours (thesis section 3.4):
 /// `L1(X, Y) = (sum_{x in X} d(x, Y) + sum_{y in Y} d(y, X)) / (|X| + |Y|)`, d the Euclidean distance
 /// to the nearest point of the other set, in normalized coordinates. Exact; the points of a contour
-/// lie on its rows, so each nearest point is found by merging sorted rows outwards from the row of x
-/// until the row gap exceeds the distances found (for general point sets see
+/// lie on its rows, so each nearest point is found by binary searches in the rows outwards from the
+/// row of x until the row gap exceeds the distance found (for general point sets see
 /// `point_set_l1_distance`). 0 for two empty contours, +infinity when only one is empty.
+/// With `bound`: the computation stops as soon as the result is known to exceed `bound` and then
+/// returns some value > `bound` (matching only needs the distances below the second best).
 /// \throws Invalid_input when the numbers of rows differ
-inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y) {
+inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y,
+                                  double bound = std::numeric_limits<double>::infinity()) {
   if(X.rows() != Y.rows())
     throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
                                                            std::to_string(Y.rows()) + " rows");
   if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
-  thread_local std::vector<double> best;
-  const double s = internal::directed_contour_sum(X, Y, best) + internal::directed_contour_sum(Y, X, best);
-  return s / static_cast<double>(X.size() + Y.size());
+  const double total = static_cast<double>(X.size() + Y.size());
+  const double limit = bound * total;
+  const double a = internal::directed_contour_sum(X, Y, limit);
+  if(a > limit) return a / total;
+  return (a + internal::directed_contour_sum(Y, X, limit - a)) / total;
 }
 
 /// \ingroup PkgShapeCorrDescriptors
 /// The distance functor of spin contours for the matchers (`contour_l1_distance`).
 struct Contour_l1_distance {
   double operator()(const Spin_contour& a, const Spin_contour& b) const { return contour_l1_distance(a, b); }
+  /// early-exit form used by `match_descriptors`
+  double operator()(const Spin_contour& a, const Spin_contour& b, double bound) const { return contour_l1_distance(a, b, bound); }
 };
 
 /// \ingroup PkgShapeCorrDescriptors

@@ -12,6 +12,17 @@
 #include <vector>
 
 namespace shapecorr {
+namespace internal {
+// distance(a, b, bound) when the functor offers an early-exit form, distance(a, b) otherwise.
+template <typename Distance, typename A, typename B>
+auto bounded_distance(const Distance& d, const A& a, const B& b, double bound, int) -> decltype(d(a, b, bound)) {
+  return d(a, b, bound);
+}
+template <typename Distance, typename A, typename B>
+double bounded_distance(const Distance& d, const A& a, const B& b, double, long) {
+  return d(a, b);
+}
+} // namespace internal
 
 /// \ingroup PkgShapeCorrDescriptors
 /// The result of matching one source descriptor against a set of target descriptors.
@@ -31,6 +42,9 @@ struct Descriptor_match {
 /// the lower position), recording the second smallest too. Generic over the descriptor type:
 /// `Contour_l1_distance` for spin contours, `Spin_image_distance` for spin images,
 /// `spectral_descriptor_distance` wrapped in a lambda for HKS/WKS... Runs on `threads` threads (0 = all).
+/// A functor that also offers `distance(s, t, bound)` (returning any value > bound once the
+/// distance is known to exceed it, as `Contour_l1_distance` does) is called that way with the
+/// current second-best distance: same matches, less work.
 template <typename SourceRange, typename TargetRange, typename Distance>
 std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, const TargetRange& targets, const Distance& distance,
                                                 unsigned threads = 0) {
@@ -46,7 +60,8 @@ std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, cons
     Descriptor_match m;
     m.source = i;
     for(std::size_t j = 0; j < t.size(); ++j) {
-      const double d = distance(*s[i], *t[j]);
+      // Only distances below the second best matter: functors with a bound may stop early.
+      const double d = internal::bounded_distance(distance, *s[i], *t[j], m.second_distance, 0);
       if(d < m.distance) {
         m.second_distance = m.distance;
         m.distance = d;

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -104,90 +106,156 @@ inline Spin_image face_spin_image(const Spin_geometry& g, const Oriented_point& 
   return img;
 }
 
-// Distance from the origin to the segment [a, b].
-inline double origin_to_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp(-a.dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (a + t * d).norm();
-}
 
 struct Contour_workspace {
-  std::vector<std::vector<std::pair<double, double>>> intervals; // per row
+  std::vector<double> y;                                   // per vertex: (L - beta) / h - 1/2 (row r lies at y = r)
+  std::vector<Eigen::Vector2d> q;                          // per vertex: its component orthogonal to the axis, in a 2-D basis
+  std::vector<std::pair<std::uint32_t, std::pair<double, double>>> entries; // (row, alpha interval)
+  std::vector<std::pair<double, double>> open;             // per row: the interval being grown from neighbouring faces
+  std::vector<std::uint32_t> count, next;
+  std::vector<std::pair<double, double>> sorted;           // intervals grouped by row
   std::vector<std::vector<std::pair<double, double>>> merged;
   std::vector<float> row;
 };
 
+// Squared distance from the origin to the 2-D segment [a, b] (one division at most).
+inline double origin_to_segment2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double ad = a.dot(d);
+  if(ad >= 0) return a.squaredNorm();
+  if(b.dot(d) <= 0) return b.squaredNorm();
+  const double c = a.x() * d.y() - a.y() * d.x();
+  return c * c / d.squaredNorm();
+}
+
 /// The Spin Contour by the thesis's fast construction: the alpha ranges of the intersections of
 /// every triangle with the planes beta = beta_r, their union per row, the interval end points, and
 /// the closing samples (alpha on the column grid) of I_r \ I_{r-1} and I_r \ I_{r+1}.
+/// Every vertex is first written in the frame of the oriented point: its row coordinate and its
+/// 2-D offset from the axis. On a plane beta = const both are linear along an edge, so a
+/// triangle's section is the 2-D segment between two interpolated offsets: its alpha range is
+/// [distance from the origin to the segment, largest end-point norm].
 inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& op, const Spin_options& o, Contour_workspace& ws) {
   const double L = o.support;
   const std::size_t R = o.rows;
   const double h = 2.0 * L / static_cast<double>(R);
-  ws.intervals.resize(R);
   ws.merged.resize(R);
-  for(auto& v : ws.intervals) v.clear();
+  ws.entries.clear();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ws.open.assign(R, {nan, nan});
   const Eigen::Vector3d n = op.axis;
-  const std::size_t m = g.a.number_of_faces();
-  for_each_candidate(g.face_tree, m, op.point, std::sqrt(2.0) * L + g.max_face_radius, g.bbox_diagonal, [&](std::size_t f) {
-    const Eigen::Index fi = static_cast<Eigen::Index>(f);
-    Eigen::Vector3d w[3];
-    double b[3];
-    for(int k = 0; k < 3; ++k) {
-      w[k] = g.a.V.row(g.a.F(fi, k)).transpose() - op.point;
-      b[k] = n.dot(w[k]);
+  Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  const std::size_t nv = g.a.number_of_vertices(), m = g.a.number_of_faces();
+  ws.y.resize(nv);
+  ws.q.resize(nv);
+  {
+    const double* V = g.a.V.data();
+    const double inv = 1.0 / h;
+    for(std::size_t i = 0; i < nv; ++i) {
+      const Eigen::Vector3d w(V[3 * i] - op.point.x(), V[3 * i + 1] - op.point.y(), V[3 * i + 2] - op.point.z());
+      ws.y[i] = (L - n.dot(w)) * inv - 0.5;
+      ws.q[i] = Eigen::Vector2d(e1.dot(w), e2.dot(w));
     }
-    const double lo = std::min({b[0], b[1], b[2]}), hi = std::max({b[0], b[1], b[2]});
-    const double first = std::ceil((L - hi) / h - 0.5), last = std::floor((L - lo) / h - 0.5);
-    const long r0 = std::max(0L, static_cast<long>(first)), r1 = std::min(static_cast<long>(R) - 1, static_cast<long>(last));
+  }
+  const int* F = g.a.F.data();
+  const double top = static_cast<double>(R) - 1;
+  const double L2 = L * L;
+  const double eps = 1e-9 * L2; // touching intervals (shared edge points, rounded differently) merge
+  auto add = [&](std::size_t r, double l, double u) {
+    auto& cur = ws.open[r];
+    if(cur.first == cur.first && l <= cur.second + eps && u >= cur.first - eps) { // overlaps: grow (neighbouring faces)
+      cur.first = std::min(cur.first, l);
+      cur.second = std::max(cur.second, u);
+      return;
+    }
+    if(cur.first == cur.first) ws.entries.push_back({static_cast<std::uint32_t>(r), cur});
+    cur = {l, u};
+  };
+  // Sections of one face with the row planes it spans.
+  auto section = [&](const std::size_t* id, const double* y, long r0, long r1) {
+    const Eigen::Vector2d w[3] = {ws.q[id[0]], ws.q[id[1]], ws.q[id[2]]};
     for(long r = r0; r <= r1; ++r) {
-      const double t = L - (static_cast<double>(r) + 0.5) * h;
-      // Intersection points with the plane beta = t, as radial vectors (their beta component removed).
-      Eigen::Vector3d pts[6];
-      int np = 0;
-      for(int k = 0; k < 3; ++k) {
-        const int k2 = (k + 1) % 3;
-        const double s0 = b[k] - t, s1 = b[k2] - t;
-        if(s0 == 0) pts[np++] = w[k];
-        if((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) pts[np++] = w[k] + (s0 / (s0 - s1)) * (w[k2] - w[k]);
-      }
-      if(np == 0) continue;
-      double u = 0, l;
-      for(int i = 0; i < np; ++i) {
-        pts[i] -= n.dot(pts[i]) * n;
-        u = std::max(u, pts[i].norm());
-      }
-      if(np == 3 && b[0] == t && b[1] == t && b[2] == t) { // the triangle lies in the plane
-        const Eigen::Vector3d c0 = pts[1].cross(pts[2]), c1 = pts[2].cross(pts[0]), c2 = pts[0].cross(pts[1]);
-        const double s0 = n.dot(c0), s1 = n.dot(c1), s2 = n.dot(c2);
-        const bool inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
-        l = inside ? 0.0 : std::min({origin_to_segment(pts[0], pts[1]), origin_to_segment(pts[1], pts[2]), origin_to_segment(pts[2], pts[0])});
+      const double t = static_cast<double>(r);
+      const double s[3] = {y[0] - t, y[1] - t, y[2] - t};
+      double l, u;
+      if(s[0] != 0 && s[1] != 0 && s[2] != 0) {
+        // The common case: one vertex alone on its side; the section joins its two edges.
+        const bool p0 = s[0] > 0, p1 = s[1] > 0, p2 = s[2] > 0;
+        const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        const Eigen::Vector2d A = w[k] + (s[k] / (s[k] - s[a])) * (w[a] - w[k]);
+        const Eigen::Vector2d B = w[k] + (s[k] / (s[k] - s[b])) * (w[b] - w[k]);
+        l = origin_to_segment2(A, B);
+        u = std::max(A.squaredNorm(), B.squaredNorm());
       } else {
-        int ia = 0, ib = 0;
-        double far = -1;
-        for(int i = 0; i < np; ++i)
-          for(int j = i + 1; j < np; ++j) {
-            const double d = (pts[i] - pts[j]).squaredNorm();
-            if(d > far) { far = d; ia = i; ib = j; }
-          }
-        l = origin_to_segment(pts[ia], pts[ib]);
+        Eigen::Vector2d pts[6];
+        int np = 0;
+        for(int k = 0; k < 3; ++k) {
+          const int k2 = (k + 1) % 3;
+          if(s[k] == 0) pts[np++] = w[k];
+          if((s[k] < 0 && s[k2] > 0) || (s[k] > 0 && s[k2] < 0)) pts[np++] = w[k] + (s[k] / (s[k] - s[k2])) * (w[k2] - w[k]);
+        }
+        if(np == 0) continue;
+        double u2 = 0;
+        for(int i = 0; i < np; ++i) u2 = std::max(u2, pts[i].squaredNorm());
+        u = u2;
+        if(np == 3 && s[0] == 0 && s[1] == 0 && s[2] == 0) { // the triangle lies in the plane
+          const auto cross = [](const Eigen::Vector2d& x, const Eigen::Vector2d& z) { return x.x() * z.y() - x.y() * z.x(); };
+          const double c0 = cross(pts[1], pts[2]), c1 = cross(pts[2], pts[0]), c2 = cross(pts[0], pts[1]);
+          const bool inside = (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
+          l = inside ? 0.0 : std::min({origin_to_segment2(pts[0], pts[1]), origin_to_segment2(pts[1], pts[2]), origin_to_segment2(pts[2], pts[0])});
+        } else {
+          int ia = 0, ib = 0;
+          double far = -1;
+          for(int i = 0; i < np; ++i)
+            for(int j = i + 1; j < np; ++j) {
+              const double d = (pts[i] - pts[j]).squaredNorm();
+              if(d > far) { far = d; ia = i; ib = j; }
+            }
+          l = origin_to_segment2(pts[ia], pts[ib]);
+        }
       }
-      if(l > L) continue;
-      ws.intervals[static_cast<std::size_t>(r)].emplace_back(l, std::min(u, L));
+      // l and u are squared alphas here: the union is taken on squares (same order), roots at the end.
+      if(l > L2) continue;
+      add(static_cast<std::size_t>(r), l, std::min(u, L2));
     }
-  });
+  };
+  auto face = [&](std::size_t f) {
+    const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
+    const double y[3] = {ws.y[id[0]], ws.y[id[1]], ws.y[id[2]]};
+    // ceil / floor by integer conversion (std::ceil is a library call without SSE4.1)
+    const double mn = std::max(-1.0, std::min({y[0], y[1], y[2]})), mx = std::min(top + 1, std::max({y[0], y[1], y[2]}));
+    const long t0 = static_cast<long>(mn), t1 = static_cast<long>(mx);
+    const long lo = std::max(0L, t0 + (static_cast<double>(t0) < mn ? 1 : 0));
+    const long hi = std::min(static_cast<long>(top), t1 - (static_cast<double>(t1) > mx ? 1 : 0));
+    if(lo <= hi) section(id, y, lo, hi); // most faces span no row plane
+  };
+  if(std::sqrt(2.0) * L + g.max_face_radius >= g.bbox_diagonal)
+    for(std::size_t f = 0; f < m; ++f) face(f);
+  else
+    g.face_tree.for_each_within({op.point.x(), op.point.y(), op.point.z()}, std::sqrt(2.0) * L + g.max_face_radius,
+                                [&](std::size_t f, double) { face(f); });
+  for(std::size_t r = 0; r < R; ++r)
+    if(ws.open[r].first == ws.open[r].first) ws.entries.push_back({static_cast<std::uint32_t>(r), ws.open[r]});
+  // Group the intervals by row (counting sort), sort each row by its lower ends.
+  ws.count.assign(R + 1, 0u);
+  for(const auto& e : ws.entries) ++ws.count[e.first + 1];
+  for(std::size_t r = 0; r < R; ++r) ws.count[r + 1] += ws.count[r];
+  ws.sorted.resize(ws.entries.size());
+  ws.next.assign(ws.count.begin(), ws.count.end() - 1);
+  for(const auto& e : ws.entries) ws.sorted[ws.next[e.first]++] = e.second;
   // Union per row.
-  const double eps = 1e-9 * L;
   for(std::size_t r = 0; r < R; ++r) {
-    auto& in = ws.intervals[r];
+    auto first = ws.sorted.begin() + ws.count[r], last = ws.sorted.begin() + ws.count[r + 1];
     auto& out = ws.merged[r];
     out.clear();
-    std::sort(in.begin(), in.end());
-    for(const auto& iv : in) {
+    std::sort(first, last, [](const std::pair<double, double>& a, const std::pair<double, double>& b) { return a.first < b.first; });
+    for(auto it = first; it != last; ++it) {
+      const auto& iv = *it;
       if(!out.empty() && iv.first <= out.back().second + eps) out.back().second = std::max(out.back().second, iv.second);
       else out.push_back(iv);
     }
+    for(auto& iv : out) iv = {std::sqrt(iv.first), std::sqrt(iv.second)};
   }
   auto contains = [&](std::size_t r, long s, double a) {
     if(s < 0 || s >= static_cast<long>(R)) return false;
