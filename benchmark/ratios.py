@@ -16,8 +16,12 @@ ctx = json.load(open(sys.argv[1]))["context"]
 def ms(b):
     t = b["real_time"]
     return {"ns": t / 1e6, "us": t / 1e3, "ms": t, "s": t * 1e3}[b["time_unit"]]
-n = int(next(iter(runs.values()))["vertices"])
-print(f"mesh: {n} vertices, {ctx.get('num_cpus')} cpus")
+first = next(iter(runs.values()))
+n = int(first.get("vertices", 0))
+if n:
+    print(f"mesh: {n} vertices, {ctx.get('num_cpus')} cpus")
+else:
+    print(f"mesh: {int(first.get('faces', 0))} faces, {ctx.get('num_cpus')} cpus")
 ref = runs.get("BM_Reference_CGAL_HeatMethod_PerSource/iterations:1/real_time")
 cgal_all = None
 if ref:
@@ -57,3 +61,27 @@ for name in ("BM_HKS_AllVertices", "BM_WKS_AllVertices", "BM_SIHKS_AllVertices")
 t = runs.get("BM_Total_EigenbasisHksWks/iterations:3")
 if t:
     print(f"eigenbasis + HKS + WKS, all vertices: {ms(t)/1e3:.3f} s")
+# Rigid descriptors (bench_descriptors): per-point construction and per-pair comparison ratios.
+sc = runs.get("BM_SpinContour")
+fsi = runs.get("BM_Reference_FaceSpinImage")
+if sc and fsi:
+    print(f"Spin Contour: {ms(sc)*1e3:.0f} us ({sc['mean_points']:.0f} points); face-based spin image: {ms(fsi)*1e3:.0f} us "
+          f"-> contour {ms(fsi)/ms(sc):.1f}x faster")
+si = runs.get("BM_SpinImage")
+if si:
+    print(f"spin image (vertices): {ms(si)*1e3:.0f} us")
+cc = runs.get("BM_CompareContours")
+ci = runs.get("BM_Reference_CompareImages")
+if cc and ci:
+    print(f"compare two contours: {ms(cc)*1e3:.1f} us; two images (correlation): {ms(ci)*1e3:.1f} us -> ratio {ms(ci)/ms(cc):.2f}")
+ck = runs.get("BM_CompareContours_KdTree")
+if ck and cc:
+    print(f"compare two contours with kd-trees: {ms(ck)*1e3:.1f} us ({ms(ck)/ms(cc):.1f}x the row search)")
+mc = runs.get("BM_MatchContour_PerComparison")
+mi = runs.get("BM_Reference_MatchImage_PerComparison")
+if mc and mi:
+    print(f"matching, per comparison: contour {ms(mc)*1e3/64:.2f} us (early exit), image {ms(mi)*1e3/64:.2f} us -> {ms(mi)/ms(mc):.1f}x")
+for name in ("BM_PCL_SpinImage", "BM_PCL_SHOT352"):
+    p = runs.get(name)
+    if p and sc:
+        print(f"{name}: {ms(p)*1e3:.0f} us per point ({ms(p)/ms(sc):.2f}x the Spin Contour)")
