@@ -16,7 +16,7 @@
 
 #include <benchmark/benchmark.h>
 
-#ifdef SHAPECORR_BENCH_WITH_PCL
+#ifdef SHAPECORR_WITH_PCL
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/features/shot.h>
 #include <pcl/features/spin_image.h>
@@ -132,7 +132,7 @@ void BM_Reference_MatchImage_PerComparison(benchmark::State& state) {
 }
 BENCHMARK(BM_Reference_MatchImage_PerComparison)->Unit(benchmark::kMicrosecond);
 
-#ifdef SHAPECORR_BENCH_WITH_PCL
+#ifdef SHAPECORR_WITH_PCL
 struct Pcl_fixture {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud{new pcl::PointCloud<pcl::PointXYZ>};
   pcl::PointCloud<pcl::Normal>::Ptr normals{new pcl::PointCloud<pcl::Normal>};

@@ -1,0 +1,145 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Evaluation helper: line plots into a PNG (axes, ticks, curves, a legend in a 5x7 bitmap font).
+#ifndef SHAPECORR_EVALUATION_PLOT_H
+#define SHAPECORR_EVALUATION_PLOT_H
+
+#include <shapecorr/io/write_png.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eval {
+
+// 5x7 glyphs, rows top to bottom, '#' = ink.
+inline const std::map<char, std::array<const char*, 7>>& font() {
+  static const std::map<char, std::array<const char*, 7>> f = {
+      {'0', {{".###.", "#...#", "#..##", "#.#.#", "##..#", "#...#", ".###."}}},
+      {'1', {{"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###."}}},
+      {'2', {{".###.", "#...#", "....#", "...#.", "..#..", ".#...", "#####"}}},
+      {'3', {{"#####", "...#.", "..#..", "...#.", "....#", "#...#", ".###."}}},
+      {'4', {{"...#.", "..##.", ".#.#.", "#..#.", "#####", "...#.", "...#."}}},
+      {'5', {{"#####", "#....", "####.", "....#", "....#", "#...#", ".###."}}},
+      {'6', {{"..##.", ".#...", "#....", "####.", "#...#", "#...#", ".###."}}},
+      {'7', {{"#####", "....#", "...#.", "..#..", ".#...", ".#...", ".#..."}}},
+      {'8', {{".###.", "#...#", "#...#", ".###.", "#...#", "#...#", ".###."}}},
+      {'9', {{".###.", "#...#", "#...#", ".####", "....#", "...#.", ".##.."}}},
+      {'A', {{".###.", "#...#", "#...#", "#####", "#...#", "#...#", "#...#"}}},
+      {'B', {{"####.", "#...#", "#...#", "####.", "#...#", "#...#", "####."}}},
+      {'C', {{".###.", "#...#", "#....", "#....", "#....", "#...#", ".###."}}},
+      {'D', {{"###..", "#..#.", "#...#", "#...#", "#...#", "#..#.", "###.."}}},
+      {'E', {{"#####", "#....", "#....", "####.", "#....", "#....", "#####"}}},
+      {'F', {{"#####", "#....", "#....", "####.", "#....", "#....", "#...."}}},
+      {'G', {{".###.", "#...#", "#....", "#.###", "#...#", "#...#", ".####"}}},
+      {'H', {{"#...#", "#...#", "#...#", "#####", "#...#", "#...#", "#...#"}}},
+      {'I', {{".###.", "..#..", "..#..", "..#..", "..#..", "..#..", ".###."}}},
+      {'J', {{"..###", "...#.", "...#.", "...#.", "...#.", "#..#.", ".##.."}}},
+      {'K', {{"#...#", "#..#.", "#.#..", "##...", "#.#..", "#..#.", "#...#"}}},
+      {'L', {{"#....", "#....", "#....", "#....", "#....", "#....", "#####"}}},
+      {'M', {{"#...#", "##.##", "#.#.#", "#.#.#", "#...#", "#...#", "#...#"}}},
+      {'N', {{"#...#", "#...#", "##..#", "#.#.#", "#..##", "#...#", "#...#"}}},
+      {'O', {{".###.", "#...#", "#...#", "#...#", "#...#", "#...#", ".###."}}},
+      {'P', {{"####.", "#...#", "#...#", "####.", "#....", "#....", "#...."}}},
+      {'Q', {{".###.", "#...#", "#...#", "#...#", "#.#.#", "#..#.", ".##.#"}}},
+      {'R', {{"####.", "#...#", "#...#", "####.", "#.#..", "#..#.", "#...#"}}},
+      {'S', {{".####", "#....", "#....", ".###.", "....#", "....#", "####."}}},
+      {'T', {{"#####", "..#..", "..#..", "..#..", "..#..", "..#..", "..#.."}}},
+      {'U', {{"#...#", "#...#", "#...#", "#...#", "#...#", "#...#", ".###."}}},
+      {'V', {{"#...#", "#...#", "#...#", "#...#", "#...#", ".#.#.", "..#.."}}},
+      {'W', {{"#...#", "#...#", "#...#", "#.#.#", "#.#.#", "#.#.#", ".#.#."}}},
+      {'X', {{"#...#", "#...#", ".#.#.", "..#..", ".#.#.", "#...#", "#...#"}}},
+      {'Y', {{"#...#", "#...#", ".#.#.", "..#..", "..#..", "..#..", "..#.."}}},
+      {'Z', {{"#####", "....#", "...#.", "..#..", ".#...", "#....", "#####"}}},
+      {'-', {{".....", ".....", ".....", "#####", ".....", ".....", "....."}}},
+      {'.', {{".....", ".....", ".....", ".....", ".....", ".##..", ".##.."}}},
+      {'=', {{".....", ".....", "#####", ".....", "#####", ".....", "....."}}},
+      {'(', {{"...#.", "..#..", ".#...", ".#...", ".#...", "..#..", "...#."}}},
+      {')', {{".#...", "..#..", "...#.", "...#.", "...#.", "..#..", ".#..."}}},
+      {'/', {{".....", "....#", "...#.", "..#..", ".#...", "#....", "....."}}},
+      {':', {{".....", ".##..", ".##..", ".....", ".##..", ".##..", "....."}}},
+      {'%', {{"##...", "##..#", "...#.", "..#..", ".#...", "#..##", "...##"}}},
+      {' ', {{".....", ".....", ".....", ".....", ".....", ".....", "....."}}},
+  };
+  return f;
+}
+
+inline void draw_text(shapecorr::Rgb_picture& p, std::size_t x, std::size_t y, const std::string& s, std::array<std::uint8_t, 3> c = {{0, 0, 0}}) {
+  for(char ch : s) {
+    const auto it = font().find(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
+    if(it != font().end())
+      for(std::size_t r = 0; r < 7; ++r)
+        for(std::size_t k = 0; k < 5; ++k)
+          if(it->second[r][k] == '#') p.set(x + k, y + r, c);
+    x += 6;
+  }
+}
+
+inline void draw_line(shapecorr::Rgb_picture& p, double x0, double y0, double x1, double y1, std::array<std::uint8_t, 3> c, int width = 2) {
+  const int steps = static_cast<int>(std::max(std::abs(x1 - x0), std::abs(y1 - y0))) + 1;
+  for(int i = 0; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    const double x = x0 + t * (x1 - x0), y = y0 + t * (y1 - y0);
+    for(int dx = 0; dx < width; ++dx)
+      for(int dy = 0; dy < width; ++dy)
+        if(x + dx >= 0 && y + dy >= 0) p.set(static_cast<std::size_t>(x + dx), static_cast<std::size_t>(y + dy), c);
+  }
+}
+
+struct Curve {
+  std::string label;
+  std::vector<double> x, y;
+};
+
+inline std::array<std::uint8_t, 3> palette(std::size_t i) {
+  static const std::array<std::array<std::uint8_t, 3>, 10> c = {{{{31, 119, 180}}, {{255, 127, 14}}, {{44, 160, 44}}, {{214, 39, 40}},
+                                                                 {{148, 103, 189}}, {{140, 86, 75}}, {{227, 119, 194}}, {{127, 127, 127}},
+                                                                 {{188, 189, 34}}, {{23, 190, 207}}}};
+  return c[i % c.size()];
+}
+
+/// A plot of curves in [0, xmax] x [0, ymax] with a title, axis labels and a legend.
+inline shapecorr::Rgb_picture line_plot(const std::vector<Curve>& curves, const std::string& title, const std::string& xlabel,
+                                        const std::string& ylabel, double xmax = 1.0, double ymax = 1.0) {
+  const std::size_t W = 640, H = 480, left = 60, right = 170, top = 30, bottom = 50;
+  shapecorr::Rgb_picture p(W, H);
+  const double pw = static_cast<double>(W - left - right), ph = static_cast<double>(H - top - bottom);
+  auto X = [&](double x) { return static_cast<double>(left) + x / xmax * pw; };
+  auto Y = [&](double y) { return static_cast<double>(H - bottom) - y / ymax * ph; };
+  const std::array<std::uint8_t, 3> grey = {{215, 215, 215}}, black = {{0, 0, 0}};
+  for(int t = 0; t <= 10; ++t) {
+    const double fx = xmax * t / 10, fy = ymax * t / 10;
+    draw_line(p, X(fx), Y(0), X(fx), Y(ymax), grey, 1);
+    draw_line(p, X(0), Y(fy), X(xmax), Y(fy), grey, 1);
+    if(t % 2 == 0) {
+      char buf[16];
+      std::snprintf(buf, sizeof buf, "%.1f", fx);
+      draw_text(p, static_cast<std::size_t>(X(fx)) - 9, H - bottom + 6, buf);
+      std::snprintf(buf, sizeof buf, "%.1f", fy);
+      draw_text(p, left - 24, static_cast<std::size_t>(Y(fy)) - 3, buf);
+    }
+  }
+  draw_line(p, X(0), Y(0), X(xmax), Y(0), black, 1);
+  draw_line(p, X(0), Y(0), X(0), Y(ymax), black, 1);
+  draw_text(p, left, 10, title);
+  draw_text(p, left + static_cast<std::size_t>(pw / 2) - 3 * xlabel.size(), H - 20, xlabel);
+  draw_text(p, 4, top - 14, ylabel);
+  for(std::size_t i = 0; i < curves.size(); ++i) {
+    const auto c = palette(i);
+    const Curve& cv = curves[i];
+    for(std::size_t k = 1; k < cv.x.size(); ++k)
+      draw_line(p, X(std::min(cv.x[k - 1], xmax)), Y(std::min(cv.y[k - 1], ymax)), X(std::min(cv.x[k], xmax)), Y(std::min(cv.y[k], ymax)), c);
+    const std::size_t ly = top + 10 + 16 * i;
+    draw_line(p, static_cast<double>(W - right + 10), static_cast<double>(ly + 3), static_cast<double>(W - right + 30), static_cast<double>(ly + 3), c, 3);
+    draw_text(p, W - right + 36, ly, cv.label);
+  }
+  return p;
+}
+
+} // namespace eval
+
+#endif
