@@ -12,6 +12,8 @@ for b in benchmarks:
     if b.get("run_type") == "aggregate":
         continue
     runs[b["name"]] = medians.get(b["run_name"], b)
+if not runs:  # --benchmark_report_aggregates_only: the medians are all there is
+    runs = {b["run_name"]: b for b in medians.values()}
 ctx = json.load(open(sys.argv[1]))["context"]
 def ms(b):
     t = b["real_time"]

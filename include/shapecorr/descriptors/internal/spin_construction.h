@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -110,8 +111,13 @@ inline Spin_image face_spin_image(const Spin_geometry& g, const Oriented_point& 
 struct Contour_workspace {
   std::vector<double> y;                                   // per vertex: (L - beta) / h - 1/2 (row r lies at y = r)
   std::vector<Eigen::Vector2d> q;                          // per vertex: its component orthogonal to the axis, in a 2-D basis
+  std::vector<std::array<int, 2>> rows;                    // per vertex: floor(y), ceil(y) (clamped to [-1, R])
   std::vector<std::pair<std::uint32_t, std::pair<double, double>>> entries; // (row, alpha interval)
-  std::vector<std::pair<double, double>> open;             // per row: the interval being grown from neighbouring faces
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> face_rows; // (row, face) of every face a row plane crosses
+  std::vector<std::uint32_t> bucket;                       // faces grouped by row
+  std::vector<std::uint32_t> stamp;                        // per face: the row walk that visited it last
+  std::uint32_t epoch = 0;
+  std::vector<std::uint32_t> stack;
   std::vector<std::uint32_t> count, next;
   std::vector<std::pair<double, double>> sorted;           // intervals grouped by row
   std::vector<std::vector<std::pair<double, double>>> merged;
@@ -141,102 +147,205 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   const double h = 2.0 * L / static_cast<double>(R);
   ws.merged.resize(R);
   ws.entries.clear();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  ws.open.assign(R, {nan, nan});
   const Eigen::Vector3d n = op.axis;
   Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
   const std::size_t nv = g.a.number_of_vertices(), m = g.a.number_of_faces();
   ws.y.resize(nv);
   ws.q.resize(nv);
+  ws.rows.resize(nv);
   {
+    const double ymax = static_cast<double>(R);
     const double* V = g.a.V.data();
     const double inv = 1.0 / h;
     for(std::size_t i = 0; i < nv; ++i) {
       const Eigen::Vector3d w(V[3 * i] - op.point.x(), V[3 * i + 1] - op.point.y(), V[3 * i + 2] - op.point.z());
-      ws.y[i] = (L - n.dot(w)) * inv - 0.5;
+      const double y = (L - n.dot(w)) * inv - 0.5;
+      ws.y[i] = y;
       ws.q[i] = Eigen::Vector2d(e1.dot(w), e2.dot(w));
+      // floor and ceil by integer conversion (std::floor is a library call without SSE4.1)
+      const double c = std::min(ymax, std::max(-1.0, y));
+      const int t = static_cast<int>(c);
+      const int fl = t - (static_cast<double>(t) > c ? 1 : 0);
+      ws.rows[i] = {{fl, fl + (static_cast<double>(fl) < c ? 1 : 0)}};
     }
   }
   const int* F = g.a.F.data();
-  const double top = static_cast<double>(R) - 1;
   const double L2 = L * L;
   const double eps = 1e-9 * L2; // touching intervals (shared edge points, rounded differently) merge
-  auto add = [&](std::size_t r, double l, double u) {
-    auto& cur = ws.open[r];
-    if(cur.first == cur.first && l <= cur.second + eps && u >= cur.first - eps) { // overlaps: grow (neighbouring faces)
-      cur.first = std::min(cur.first, l);
-      cur.second = std::max(cur.second, u);
-      return;
-    }
-    if(cur.first == cur.first) ws.entries.push_back({static_cast<std::uint32_t>(r), cur});
-    cur = {l, u};
-  };
-  // Sections of one face with the row planes it spans.
-  auto section = [&](const std::size_t* id, const double* y, long r0, long r1) {
-    const Eigen::Vector2d w[3] = {ws.q[id[0]], ws.q[id[1]], ws.q[id[2]]};
-    for(long r = r0; r <= r1; ++r) {
-      const double t = static_cast<double>(r);
-      const double s[3] = {y[0] - t, y[1] - t, y[2] - t};
-      double l, u;
-      if(s[0] != 0 && s[1] != 0 && s[2] != 0) {
-        // The common case: one vertex alone on its side; the section joins its two edges.
-        const bool p0 = s[0] > 0, p1 = s[1] > 0, p2 = s[2] > 0;
-        const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        const Eigen::Vector2d A = w[k] + (s[k] / (s[k] - s[a])) * (w[a] - w[k]);
-        const Eigen::Vector2d B = w[k] + (s[k] / (s[k] - s[b])) * (w[b] - w[k]);
-        l = origin_to_segment2(A, B);
-        u = std::max(A.squaredNorm(), B.squaredNorm());
-      } else {
-        Eigen::Vector2d pts[6];
-        int np = 0;
-        for(int k = 0; k < 3; ++k) {
-          const int k2 = (k + 1) % 3;
-          if(s[k] == 0) pts[np++] = w[k];
-          if((s[k] < 0 && s[k2] > 0) || (s[k] > 0 && s[k2] < 0)) pts[np++] = w[k] + (s[k] / (s[k] - s[k2])) * (w[k2] - w[k]);
-        }
-        if(np == 0) continue;
-        double u2 = 0;
-        for(int i = 0; i < np; ++i) u2 = std::max(u2, pts[i].squaredNorm());
-        u = u2;
-        if(np == 3 && s[0] == 0 && s[1] == 0 && s[2] == 0) { // the triangle lies in the plane
-          const auto cross = [](const Eigen::Vector2d& x, const Eigen::Vector2d& z) { return x.x() * z.y() - x.y() * z.x(); };
-          const double c0 = cross(pts[1], pts[2]), c1 = cross(pts[2], pts[0]), c2 = cross(pts[0], pts[1]);
-          const bool inside = (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
-          l = inside ? 0.0 : std::min({origin_to_segment2(pts[0], pts[1]), origin_to_segment2(pts[1], pts[2]), origin_to_segment2(pts[2], pts[0])});
-        } else {
-          int ia = 0, ib = 0;
-          double far = -1;
-          for(int i = 0; i < np; ++i)
-            for(int j = i + 1; j < np; ++j) {
-              const double d = (pts[i] - pts[j]).squaredNorm();
-              if(d > far) { far = d; ia = i; ib = j; }
-            }
-          l = origin_to_segment2(pts[ia], pts[ib]);
-        }
-      }
-      // l and u are squared alphas here: the union is taken on squares (same order), roots at the end.
-      if(l > L2) continue;
-      add(static_cast<std::size_t>(r), l, std::min(u, L2));
-    }
-  };
-  auto face = [&](std::size_t f) {
+
+  // The section of face f with the plane of row r as squared alphas [l, u]; 0 when empty, else
+  // the bit mask of the edges (corner k to k+1) through which the section leaves the face.
+  auto section = [&](std::size_t f, long r, double& l, double& u) -> int {
     const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
-    const double y[3] = {ws.y[id[0]], ws.y[id[1]], ws.y[id[2]]};
-    // ceil / floor by integer conversion (std::ceil is a library call without SSE4.1)
-    const double mn = std::max(-1.0, std::min({y[0], y[1], y[2]})), mx = std::min(top + 1, std::max({y[0], y[1], y[2]}));
-    const long t0 = static_cast<long>(mn), t1 = static_cast<long>(mx);
-    const long lo = std::max(0L, t0 + (static_cast<double>(t0) < mn ? 1 : 0));
-    const long hi = std::min(static_cast<long>(top), t1 - (static_cast<double>(t1) > mx ? 1 : 0));
-    if(lo <= hi) section(id, y, lo, hi); // most faces span no row plane
+    const Eigen::Vector2d w[3] = {ws.q[id[0]], ws.q[id[1]], ws.q[id[2]]};
+    const double t = static_cast<double>(r);
+    const double s[3] = {ws.y[id[0]] - t, ws.y[id[1]] - t, ws.y[id[2]] - t};
+    if(s[0] != 0 && s[1] != 0 && s[2] != 0) {
+      // The common case: one vertex alone on its side; the section joins its two edges.
+      const bool p0 = s[0] > 0, p1 = s[1] > 0, p2 = s[2] > 0;
+      if(p0 == p1 && p1 == p2) return 0;
+      const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const double ta = s[k] / (s[k] - s[a]), tb = s[k] / (s[k] - s[b]);
+      const double ax = w[k].x() + ta * (w[a].x() - w[k].x()), ay = w[k].y() + ta * (w[a].y() - w[k].y());
+      const double bx = w[k].x() + tb * (w[b].x() - w[k].x()), by = w[k].y() + tb * (w[b].y() - w[k].y());
+      const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by;
+      const double dx = bx - ax, dy = by - ay;
+      // squared distance from the axis (the origin) to the segment [A, B]
+      const double ad = ax * dx + ay * dy, bd = bx * dx + by * dy;
+      if(ad >= 0) l = a2;
+      else if(bd <= 0) l = b2;
+      else {
+        const double c = ax * dy - ay * dx;
+        l = c * c / (dx * dx + dy * dy);
+      }
+      u = std::max(a2, b2);
+      return (1 << k) | (1 << b); // edges (k, k+1) and (k+2, k)
+    }
+    Eigen::Vector2d pts[6];
+    int np = 0;
+    for(int k = 0; k < 3; ++k) {
+      const int k2 = (k + 1) % 3;
+      if(s[k] == 0) pts[np++] = w[k];
+      if((s[k] < 0 && s[k2] > 0) || (s[k] > 0 && s[k2] < 0)) pts[np++] = w[k] + (s[k] / (s[k] - s[k2])) * (w[k2] - w[k]);
+    }
+    if(np == 0) return 0;
+    u = 0;
+    for(int i = 0; i < np; ++i) u = std::max(u, pts[i].squaredNorm());
+    if(np == 3 && s[0] == 0 && s[1] == 0 && s[2] == 0) { // the triangle lies in the plane
+      const auto cross = [](const Eigen::Vector2d& x, const Eigen::Vector2d& z) { return x.x() * z.y() - x.y() * z.x(); };
+      const double c0 = cross(pts[1], pts[2]), c1 = cross(pts[2], pts[0]), c2 = cross(pts[0], pts[1]);
+      const bool inside = (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
+      l = inside ? 0.0 : std::min({origin_to_segment2(pts[0], pts[1]), origin_to_segment2(pts[1], pts[2]), origin_to_segment2(pts[2], pts[0])});
+    } else {
+      int ia = 0, ib = 0;
+      double far = -1;
+      for(int i = 0; i < np; ++i)
+        for(int j = i + 1; j < np; ++j) {
+          const double d = (pts[i] - pts[j]).squaredNorm();
+          if(d > far) { far = d; ia = i; ib = j; }
+        }
+      l = origin_to_segment2(pts[ia], pts[ib]);
+    }
+    int edges = 0; // corners on the plane: leave through every edge the plane meets
+    for(int k = 0; k < 3; ++k)
+      if(s[k] * s[(k + 1) % 3] <= 0) edges |= 1 << k;
+    return edges;
+  };
+  // 1. The faces each row plane crosses (most faces cross none), grouped by row.
+  ws.face_rows.clear();
+  const int last_row = static_cast<int>(R) - 1;
+  auto classify = [&](std::size_t f) {
+    const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
+    const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
+    const auto& a2 = ws.rows[static_cast<std::size_t>(F[3 * f + 2])];
+    // rows r with min y <= r <= max y: from the smallest ceil to the largest floor
+    const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
+    const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
+    for(int r = lo; r <= hi; ++r) ws.face_rows.emplace_back(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f));
   };
   if(std::sqrt(2.0) * L + g.max_face_radius >= g.bbox_diagonal)
-    for(std::size_t f = 0; f < m; ++f) face(f);
+    for(std::size_t f = 0; f < m; ++f) classify(f);
   else
     g.face_tree.for_each_within({op.point.x(), op.point.y(), op.point.z()}, std::sqrt(2.0) * L + g.max_face_radius,
-                                [&](std::size_t f, double) { face(f); });
-  for(std::size_t r = 0; r < R; ++r)
-    if(ws.open[r].first == ws.open[r].first) ws.entries.push_back({static_cast<std::uint32_t>(r), ws.open[r]});
+                                [&](std::size_t f, double) { classify(f); });
+  ws.count.assign(R + 1, 0u);
+  for(const auto& e : ws.face_rows) ++ws.count[e.first + 1];
+  for(std::size_t r = 0; r < R; ++r) ws.count[r + 1] += ws.count[r];
+  ws.bucket.resize(ws.face_rows.size());
+  ws.next.assign(ws.count.begin(), ws.count.end() - 1);
+  for(const auto& e : ws.face_rows) ws.bucket[ws.next[e.first]++] = e.second;
+  if(ws.stamp.size() != m || ws.epoch > 0xFFFFFFFFu - R) {
+    ws.stamp.assign(m, 0);
+    ws.epoch = 0;
+  }
+  // 2. Per row, walk each connected piece of the section across shared edges: along a connected
+  //    curve alpha takes every value between its extremes, so a piece contributes one interval
+  //    [min l, max u] and the union needs no sorting of per-face intervals.
+  //    In the common case (no corner on the plane) a face has exactly two crossing edges, so the
+  //    walk follows the section as a chain, carrying the point on the shared edge: one
+  //    interpolation per face. Faces with a corner on the plane go through the general code.
+  auto edge_point = [&](std::size_t f, int k, double t, double& x, double& y) {
+    const std::size_t i = static_cast<std::size_t>(F[3 * f + static_cast<std::size_t>(k)]), j = static_cast<std::size_t>(F[3 * f + static_cast<std::size_t>((k + 1) % 3)]);
+    const double si = ws.y[i] - t, sj = ws.y[j] - t;
+    const double c = si == sj ? 0.0 : si / (si - sj);
+    x = ws.q[i].x() + c * (ws.q[j].x() - ws.q[i].x());
+    y = ws.q[i].y() + c * (ws.q[j].y() - ws.q[i].y());
+  };
+  for(std::size_t r = 0; r < R; ++r) {
+    const std::uint32_t key = ++ws.epoch;
+    const double t = static_cast<double>(r);
+    double lmin = 0, umax = 0;
+    // Follows the section from face p out through its edge k_out, whose plane point is (px, py).
+    auto follow = [&](std::uint32_t p, int k_out, double px, double py) {
+      for(;;) {
+        const int nb = g.face_neighbor[p][static_cast<std::size_t>(k_out)];
+        if(nb < 0 || ws.stamp[static_cast<std::size_t>(nb)] == key) return;
+        const std::size_t f = static_cast<std::size_t>(nb);
+        ws.stamp[f] = key;
+        const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
+        const double sv[3] = {ws.y[id[0]] - t, ws.y[id[1]] - t, ws.y[id[2]] - t};
+        int k_in = -1;
+        for(int k = 0; k < 3; ++k)
+          if(g.face_neighbor[f][static_cast<std::size_t>(k)] == static_cast<int>(p)) k_in = k;
+        if(sv[0] == 0 || sv[1] == 0 || sv[2] == 0 || k_in < 0) { // a corner on the plane: general code
+          ws.stack.push_back(static_cast<std::uint32_t>(f));
+          return;
+        }
+        const bool p0 = sv[0] > 0, p1 = sv[1] > 0, p2 = sv[2] > 0;
+        const int lone = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
+        const int ea = lone, eb = (lone + 2) % 3; // edges (lone, lone+1) and (lone+2, lone)
+        if(k_in != ea && k_in != eb) { // rounding disagrees with the previous face: general code
+          ws.stack.push_back(static_cast<std::uint32_t>(f));
+          return;
+        }
+        const int k_exit = k_in == ea ? eb : ea;
+        const std::size_t i = id[k_exit], j = id[(k_exit + 1) % 3];
+        const double si = sv[k_exit], sj = sv[(k_exit + 1) % 3];
+        const double c = si / (si - sj);
+        const double qx = ws.q[i].x() + c * (ws.q[j].x() - ws.q[i].x()), qy = ws.q[i].y() + c * (ws.q[j].y() - ws.q[i].y());
+        const double a2 = px * px + py * py, b2 = qx * qx + qy * qy;
+        const double dx = qx - px, dy = qy - py;
+        double l;
+        if(px * dx + py * dy >= 0) l = a2;
+        else if(qx * dx + qy * dy <= 0) l = b2;
+        else {
+          const double cr = px * dy - py * dx;
+          l = cr * cr / (dx * dx + dy * dy);
+        }
+        lmin = std::min(lmin, l);
+        umax = std::max(umax, b2);
+        p = static_cast<std::uint32_t>(f);
+        k_out = k_exit;
+        px = qx;
+        py = qy;
+      }
+    };
+    for(std::uint32_t b = ws.count[r]; b < ws.count[r + 1]; ++b) {
+      const std::uint32_t f0 = ws.bucket[b];
+      if(ws.stamp[f0] == key) continue;
+      ws.stamp[f0] = key;
+      ws.stack.assign(1, f0);
+      lmin = std::numeric_limits<double>::infinity();
+      umax = -1;
+      while(!ws.stack.empty()) {
+        const std::uint32_t f = ws.stack.back();
+        ws.stack.pop_back();
+        double l, u;
+        const int edges = section(f, static_cast<long>(r), l, u);
+        if(!edges) continue;
+        lmin = std::min(lmin, l);
+        umax = std::max(umax, u);
+        for(int k = 0; k < 3; ++k) {
+          if(!(edges >> k & 1)) continue;
+          double px, py;
+          edge_point(f, k, t, px, py);
+          follow(f, k, px, py);
+        }
+      }
+      if(lmin <= L2) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, std::min(umax, L2)}});
+    }
+  }
   // Group the intervals by row (counting sort), sort each row by its lower ends.
   ws.count.assign(R + 1, 0u);
   for(const auto& e : ws.entries) ++ws.count[e.first + 1];

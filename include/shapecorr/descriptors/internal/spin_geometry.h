@@ -13,6 +13,9 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -82,6 +85,32 @@ public:
     for(Eigen::Index v = 0; v < n; ++v) far = std::max(far, (a.V.row(v).transpose() - centroid).norm());
     extent = 2 * far;
     face_tree = Kd_tree<3>(std::move(centers));
+    // Neighbour across each face edge (corner k to k+1); -1 on boundaries and non-manifold edges.
+    face_neighbor.assign(static_cast<std::size_t>(m), {{-1, -1, -1}});
+    std::unordered_map<std::uint64_t, std::pair<int, int>> open_edges; // edge key -> (face, k), or (-2, .) when used 3+ times
+    open_edges.reserve(static_cast<std::size_t>(3 * m));
+    for(Eigen::Index f = 0; f < m; ++f)
+      for(int k = 0; k < 3; ++k) {
+        const std::uint64_t u = static_cast<std::uint32_t>(a.F(f, k)), v = static_cast<std::uint32_t>(a.F(f, (k + 1) % 3));
+        const std::uint64_t key = std::min(u, v) << 32 | std::max(u, v);
+        auto it = open_edges.find(key);
+        if(it == open_edges.end()) {
+          open_edges.emplace(key, std::make_pair(static_cast<int>(f), k));
+        } else if(it->second.first >= 0 && face_neighbor[static_cast<std::size_t>(it->second.first)][static_cast<std::size_t>(it->second.second)] < 0) {
+          face_neighbor[static_cast<std::size_t>(it->second.first)][static_cast<std::size_t>(it->second.second)] = static_cast<int>(f);
+          face_neighbor[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = it->second.first;
+        } else { // a third face on this edge: no neighbours across it at all
+          if(it->second.first >= 0) {
+            const int f0 = it->second.first, k0 = it->second.second;
+            const int f1 = face_neighbor[static_cast<std::size_t>(f0)][static_cast<std::size_t>(k0)];
+            face_neighbor[static_cast<std::size_t>(f0)][static_cast<std::size_t>(k0)] = -1;
+            if(f1 >= 0)
+              for(auto& nb : face_neighbor[static_cast<std::size_t>(f1)])
+                if(nb == f0) nb = -1;
+            it->second.first = -2;
+          }
+        }
+      }
     vertex_tree = Kd_tree<3>(std::move(verts));
   }
 
@@ -178,6 +207,7 @@ public:
   double extent = 0;          // 2 x the largest distance of a vertex from the centroid (rotation invariant)
   double max_face_radius = 0; // largest distance from a face centre to its corners
   Kd_tree<3> face_tree, vertex_tree;
+  std::vector<std::array<int, 3>> face_neighbor; // across edge (corner k, corner k+1); -1: none
 };
 
 } // namespace internal
