@@ -285,21 +285,17 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
         ws.stamp[f] = key;
         const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
         const double sv[3] = {ws.y[id[0]] - t, ws.y[id[1]] - t, ws.y[id[2]] - t};
-        int k_in = -1;
-        for(int k = 0; k < 3; ++k)
-          if(g.face_neighbor[f][static_cast<std::size_t>(k)] == static_cast<int>(p)) k_in = k;
+        const int k_in = g.neighbor_edge[p][static_cast<std::size_t>(k_out)];
         if(sv[0] == 0 || sv[1] == 0 || sv[2] == 0 || k_in < 0) { // a corner on the plane: general code
           ws.stack.push_back(static_cast<std::uint32_t>(f));
           return;
         }
+        // The corners' sides are per vertex, so the entry edge crosses here too and exactly one
+        // other edge does: the exit (chosen without a branch).
         const bool p0 = sv[0] > 0, p1 = sv[1] > 0, p2 = sv[2] > 0;
-        const int lone = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
-        const int ea = lone, eb = (lone + 2) % 3; // edges (lone, lone+1) and (lone+2, lone)
-        if(k_in != ea && k_in != eb) { // rounding disagrees with the previous face: general code
-          ws.stack.push_back(static_cast<std::uint32_t>(f));
-          return;
-        }
-        const int k_exit = k_in == ea ? eb : ea;
+        const bool crosses[3] = {p0 != p1, p1 != p2, p2 != p0};
+        const int k1 = k_in == 2 ? 0 : k_in + 1, k2 = k1 == 2 ? 0 : k1 + 1;
+        const int k_exit = crosses[k1] ? k1 : k2;
         const std::size_t i = id[k_exit], j = id[(k_exit + 1) % 3];
         const double si = sv[k_exit], sj = sv[(k_exit + 1) % 3];
         const double c = si / (si - sj);

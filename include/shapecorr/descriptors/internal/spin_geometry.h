@@ -112,6 +112,15 @@ public:
         }
       }
     vertex_tree = Kd_tree<3>(std::move(verts));
+    neighbor_edge.assign(static_cast<std::size_t>(m), {{-1, -1, -1}});
+    for(std::size_t f = 0; f < static_cast<std::size_t>(m); ++f)
+      for(int k = 0; k < 3; ++k) {
+        const int nb = face_neighbor[f][static_cast<std::size_t>(k)];
+        if(nb < 0) continue;
+        for(int k2 = 0; k2 < 3; ++k2)
+          if(face_neighbor[static_cast<std::size_t>(nb)][static_cast<std::size_t>(k2)] == static_cast<int>(f))
+            neighbor_edge[f][static_cast<std::size_t>(k)] = static_cast<std::int8_t>(k2);
+      }
   }
 
   /// The normal at vertex v; throws when the faces around it cancel (no defined normal).
@@ -208,6 +217,7 @@ public:
   double max_face_radius = 0; // largest distance from a face centre to its corners
   Kd_tree<3> face_tree, vertex_tree;
   std::vector<std::array<int, 3>> face_neighbor; // across edge (corner k, corner k+1); -1: none
+  std::vector<std::array<std::int8_t, 3>> neighbor_edge; // that edge's index in the neighbour
 };
 
 } // namespace internal
