@@ -108,6 +108,19 @@ inline Spin_image face_spin_image(const Spin_geometry& g, const Oriented_point& 
 }
 
 
+// Counting sort of (row, value) pairs by row: out holds the values grouped by row, row r in
+// [count[r], count[r + 1]).
+template <typename Value>
+void group_by_row(const std::vector<std::pair<std::uint32_t, Value>>& in, std::size_t rows, std::vector<std::uint32_t>& count,
+                  std::vector<std::uint32_t>& next, std::vector<Value>& out) {
+  count.assign(rows + 1, 0u);
+  for(const auto& e : in) ++count[e.first + 1];
+  for(std::size_t r = 0; r < rows; ++r) count[r + 1] += count[r];
+  out.resize(in.size());
+  next.assign(count.begin(), count.end() - 1);
+  for(const auto& e : in) out[next[e.first]++] = e.second;
+}
+
 struct Contour_workspace {
   std::vector<double> y;                                   // per vertex: (L - beta) / h - 1/2 (row r lies at y = r)
   std::vector<Eigen::Vector2d> q;                          // per vertex: its component orthogonal to the axis, in a 2-D basis
@@ -249,12 +262,7 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   else
     g.face_tree.for_each_within({op.point.x(), op.point.y(), op.point.z()}, std::sqrt(2.0) * L + g.max_face_radius,
                                 [&](std::size_t f, double) { classify(f); });
-  ws.count.assign(R + 1, 0u);
-  for(const auto& e : ws.face_rows) ++ws.count[e.first + 1];
-  for(std::size_t r = 0; r < R; ++r) ws.count[r + 1] += ws.count[r];
-  ws.bucket.resize(ws.face_rows.size());
-  ws.next.assign(ws.count.begin(), ws.count.end() - 1);
-  for(const auto& e : ws.face_rows) ws.bucket[ws.next[e.first]++] = e.second;
+  group_by_row(ws.face_rows, R, ws.count, ws.next, ws.bucket);
   if(ws.stamp.size() != m || ws.epoch > 0xFFFFFFFFu - R) {
     ws.stamp.assign(m, 0);
     ws.epoch = 0;
@@ -342,13 +350,8 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
       if(lmin <= L2) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, std::min(umax, L2)}});
     }
   }
-  // Group the intervals by row (counting sort), sort each row by its lower ends.
-  ws.count.assign(R + 1, 0u);
-  for(const auto& e : ws.entries) ++ws.count[e.first + 1];
-  for(std::size_t r = 0; r < R; ++r) ws.count[r + 1] += ws.count[r];
-  ws.sorted.resize(ws.entries.size());
-  ws.next.assign(ws.count.begin(), ws.count.end() - 1);
-  for(const auto& e : ws.entries) ws.sorted[ws.next[e.first]++] = e.second;
+  // Group the intervals by row, sort each row by its lower ends.
+  group_by_row(ws.entries, R, ws.count, ws.next, ws.sorted);
   // Union per row.
   for(std::size_t r = 0; r < R; ++r) {
     auto first = ws.sorted.begin() + ws.count[r], last = ws.sorted.begin() + ws.count[r + 1];
