@@ -12,9 +12,12 @@
 #include <Eigen/Core>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace test {
 
@@ -29,6 +32,22 @@ inline std::string data_dir() {
   const std::string d = SHAPECORR_TEST_DATA_DIR;
   std::ifstream probe(d + "/README.md");
   return probe ? d : std::string();
+}
+
+/// A path for a scratch file in this process's own temporary directory (created on first use, removed at exit), so
+/// that tests never write into the directory they are started from and parallel runs do not collide.
+inline std::string temp_path(const std::string& name) {
+  struct Scratch {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                ("shapecorr_tests_" + std::to_string(static_cast<long long>(::getpid())));
+    Scratch() { std::filesystem::create_directories(dir); }
+    ~Scratch() {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  };
+  static const Scratch scratch;
+  return (scratch.dir / name).string();
 }
 
 /// Positions of a mesh in the order of its (initialized) vertex index map.

@@ -13,7 +13,7 @@ namespace {
 // file names carry the mesh type: ctest runs the instances of a template test in parallel
 thread_local std::string prefix = "shapecorr_test_";
 std::string write_file(const std::string& name, const std::string& content) {
-  const std::string path = prefix + name;
+  const std::string path = test::temp_path(prefix + name);
   std::ofstream(path) << content;
   return path;
 }
@@ -40,7 +40,7 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
     TestType sphere;
     shapecorr::make_icosphere(sphere, 2);
     for(std::string ext : {"off", "obj", "ply", "stl"}) {
-      const std::string path = prefix + "sphere." + ext;
+      const std::string path = test::temp_path(prefix + "sphere." + ext);
       REQUIRE(CGAL::IO::write_polygon_mesh(path, sphere, CGAL::parameters::stream_precision(17)));
       TestType back;
       const auto r = shapecorr::read_triangle_mesh(path, back);
@@ -52,7 +52,7 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
     }
   }
   SECTION("missing, empty and garbage files") {
-    CHECK(read_defect<TestType>(prefix + "does_not_exist.off") == D::unreadable_file);
+    CHECK(read_defect<TestType>(test::temp_path(prefix + "does_not_exist.off")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("empty.off", "")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("garbage.off", "OFF\nthis is not a mesh\n")) == D::unreadable_file);
     CHECK(read_defect<TestType>(write_file("unknown.xyz3", "1 2 3\n")) == D::unreadable_file);
@@ -77,8 +77,8 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
     test::Surface_mesh nan_mesh;
     shapecorr::make_icosphere(nan_mesh, 1);
     nan_mesh.point(test::Surface_mesh::Vertex_index(5)) = test::Point(0, std::nan(""), 0);
-    REQUIRE(CGAL::IO::write_polygon_mesh(prefix + "nan_binary.ply", nan_mesh, CGAL::parameters::use_binary_mode(true)));
-    CHECK(read_defect<TestType>(prefix + "nan_binary.ply") == D::non_finite_coordinate);
+    REQUIRE(CGAL::IO::write_polygon_mesh(test::temp_path(prefix + "nan_binary.ply"), nan_mesh, CGAL::parameters::use_binary_mode(true)));
+    CHECK(read_defect<TestType>(test::temp_path(prefix + "nan_binary.ply")) == D::non_finite_coordinate);
   }
   SECTION("a truncated file is unreadable, not half-read") {
     CHECK(read_defect<TestType>(write_file("truncated.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1\n")) ==
@@ -142,14 +142,14 @@ TEST_CASE("coloured PLY output", "[io]") {
   shapecorr::make_icosphere(m, 1);
   std::vector<double> values(m.number_of_vertices());
   for(std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
-  shapecorr::write_colored_ply("shapecorr_test_colored.ply", m, values, {0});
+  shapecorr::write_colored_ply(test::temp_path("shapecorr_test_colored.ply"), m, values, {0});
   test::Surface_mesh back;
-  std::ifstream in("shapecorr_test_colored.ply");
+  std::ifstream in(test::temp_path("shapecorr_test_colored.ply"));
   REQUIRE(CGAL::IO::read_PLY(in, back));
   CHECK(back.number_of_vertices() == m.number_of_vertices());
   auto colors = back.property_map<test::Surface_mesh::Vertex_index, CGAL::IO::Color>("v:color");
   REQUIRE(colors.second);
   CHECK(colors.first[test::Surface_mesh::Vertex_index(0)] == CGAL::IO::Color(230, 20, 20));
   CHECK(colors.first[test::Surface_mesh::Vertex_index(41)] == CGAL::IO::Color(253, 231, 37)); // the maximum: yellow
-  CHECK_THROWS_AS(shapecorr::write_colored_ply("shapecorr_test_bad.ply", m, std::vector<double>(3)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::write_colored_ply(test::temp_path("shapecorr_test_bad.ply"), m, std::vector<double>(3)), shapecorr::Invalid_input);
 }

@@ -106,7 +106,7 @@ TEST_CASE("eigenbasis save and load round-trip; bad files are typed errors", "[s
   test::Surface_mesh m;
   test::make_ellipsoid(m, 2);
   const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 12);
-  const std::string path = "test_eigenbasis_roundtrip.bin";
+  const std::string path = test::temp_path("test_eigenbasis_roundtrip.bin");
   b.save(path);
   const auto c = shapecorr::Laplace_beltrami_eigenbasis::load(path);
   CHECK(c.eigenvalues() == b.eigenvalues());
