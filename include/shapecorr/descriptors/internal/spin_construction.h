@@ -111,19 +111,30 @@ inline Spin_image face_spin_image(const Spin_geometry& g, const Oriented_point& 
 // Counting sort of (row, value) pairs by row: out holds the values grouped by row, row r in
 // [count[r], count[r + 1]).
 template <typename Value>
-void group_by_row(const std::vector<std::pair<std::uint32_t, Value>>& in, std::size_t rows, std::vector<std::uint32_t>& count,
+void group_by_row(const std::pair<std::uint32_t, Value>* in, std::size_t n, std::size_t rows, std::vector<std::uint32_t>& count,
                   std::vector<std::uint32_t>& next, std::vector<Value>& out) {
   count.assign(rows + 1, 0u);
-  for(const auto& e : in) ++count[e.first + 1];
+  for(std::size_t i = 0; i < n; ++i) ++count[in[i].first + 1];
   for(std::size_t r = 0; r < rows; ++r) count[r + 1] += count[r];
-  out.resize(in.size());
+  out.resize(n);
   next.assign(count.begin(), count.end() - 1);
-  for(const auto& e : in) out[next[e.first]++] = e.second;
+  for(std::size_t i = 0; i < n; ++i) out[next[in[i].first]++] = in[i].second;
+}
+
+// A hint to start loading the cache line at p (no effect where the compiler has no builtin).
+inline void prefetch(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
 }
 
 struct Contour_workspace {
-  std::vector<double> y;                                   // per vertex: (L - beta) / h - 1/2 (row r lies at y = r)
-  std::vector<Eigen::Vector2d> q;                          // per vertex: its component orthogonal to the axis, in a 2-D basis
+  // per vertex: its component orthogonal to the axis in a 2-D basis (x, y) and its row coordinate
+  // t = (L - beta) / h - 1/2 (row r lies at t = r), in one record (the walk reads them together)
+  struct alignas(32) Vertex { double x, y, t; };
+  std::vector<Vertex> vx;
   std::vector<std::array<int, 2>> rows;                    // per vertex: floor(y), ceil(y) (clamped to [-1, R])
   std::vector<std::pair<std::uint32_t, std::pair<double, double>>> entries; // (row, alpha interval)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> face_rows; // (row, face) of every face a row plane crosses
@@ -163,8 +174,7 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   const Eigen::Vector3d n = op.axis;
   Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
   const std::size_t nv = g.a.number_of_vertices(), m = g.a.number_of_faces();
-  ws.y.resize(nv);
-  ws.q.resize(nv);
+  ws.vx.resize(nv);
   ws.rows.resize(nv);
   {
     const double ymax = static_cast<double>(R);
@@ -173,8 +183,7 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
     for(std::size_t i = 0; i < nv; ++i) {
       const Eigen::Vector3d w(V[3 * i] - op.point.x(), V[3 * i + 1] - op.point.y(), V[3 * i + 2] - op.point.z());
       const double y = (L - n.dot(w)) * inv - 0.5;
-      ws.y[i] = y;
-      ws.q[i] = Eigen::Vector2d(e1.dot(w), e2.dot(w));
+      ws.vx[i] = {e1.dot(w), e2.dot(w), y};
       // floor and ceil by integer conversion (std::floor is a library call without SSE4.1)
       const double c = std::min(ymax, std::max(-1.0, y));
       const int t = static_cast<int>(c);
@@ -190,9 +199,9 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   // the bit mask of the edges (corner k to k+1) through which the section leaves the face.
   auto section = [&](std::size_t f, long r, double& l, double& u) -> int {
     const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
-    const Eigen::Vector2d w[3] = {ws.q[id[0]], ws.q[id[1]], ws.q[id[2]]};
+    const Eigen::Vector2d w[3] = {{ws.vx[id[0]].x, ws.vx[id[0]].y}, {ws.vx[id[1]].x, ws.vx[id[1]].y}, {ws.vx[id[2]].x, ws.vx[id[2]].y}};
     const double t = static_cast<double>(r);
-    const double s[3] = {ws.y[id[0]] - t, ws.y[id[1]] - t, ws.y[id[2]] - t};
+    const double s[3] = {ws.vx[id[0]].t - t, ws.vx[id[1]].t - t, ws.vx[id[2]].t - t};
     if(s[0] != 0 && s[1] != 0 && s[2] != 0) {
       // The common case: one vertex alone on its side; the section joins its two edges.
       const bool p0 = s[0] > 0, p1 = s[1] > 0, p2 = s[2] > 0;
@@ -246,7 +255,9 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
     return edges;
   };
   // 1. The faces each row plane crosses (most faces cross none), grouped by row.
-  ws.face_rows.clear();
+  // Branch-free in the common case (a face crosses at most two rows): both candidate entries are
+  // written and the end advances by the count.
+  std::size_t n_rows = 0;
   const int last_row = static_cast<int>(R) - 1;
   auto classify = [&](std::size_t f) {
     const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
@@ -255,14 +266,20 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
     // rows r with min y <= r <= max y: from the smallest ceil to the largest floor
     const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
     const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
-    for(int r = lo; r <= hi; ++r) ws.face_rows.emplace_back(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f));
+    const int count = std::max(0, hi - lo + 1);
+    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 2) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
+    auto* out = ws.face_rows.data() + n_rows;
+    out[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
+    out[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
+    for(int r = lo + 2; r <= hi; ++r) out[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
+    n_rows += static_cast<std::size_t>(count);
   };
   if(std::sqrt(2.0) * L + g.max_face_radius >= g.bbox_diagonal)
     for(std::size_t f = 0; f < m; ++f) classify(f);
   else
     g.face_tree.for_each_within({op.point.x(), op.point.y(), op.point.z()}, std::sqrt(2.0) * L + g.max_face_radius,
                                 [&](std::size_t f, double) { classify(f); });
-  group_by_row(ws.face_rows, R, ws.count, ws.next, ws.bucket);
+  group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
   if(ws.stamp.size() != m || ws.epoch > 0xFFFFFFFFu - R) {
     ws.stamp.assign(m, 0);
     ws.epoch = 0;
@@ -275,10 +292,10 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   //    interpolation per face. Faces with a corner on the plane go through the general code.
   auto edge_point = [&](std::size_t f, int k, double t, double& x, double& y) {
     const std::size_t i = static_cast<std::size_t>(F[3 * f + static_cast<std::size_t>(k)]), j = static_cast<std::size_t>(F[3 * f + static_cast<std::size_t>((k + 1) % 3)]);
-    const double si = ws.y[i] - t, sj = ws.y[j] - t;
+    const double si = ws.vx[i].t - t, sj = ws.vx[j].t - t;
     const double c = si == sj ? 0.0 : si / (si - sj);
-    x = ws.q[i].x() + c * (ws.q[j].x() - ws.q[i].x());
-    y = ws.q[i].y() + c * (ws.q[j].y() - ws.q[i].y());
+    x = ws.vx[i].x + c * (ws.vx[j].x - ws.vx[i].x);
+    y = ws.vx[i].y + c * (ws.vx[j].y - ws.vx[i].y);
   };
   for(std::size_t r = 0; r < R; ++r) {
     const std::uint32_t key = ++ws.epoch;
@@ -287,13 +304,19 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
     // Follows the section from face p out through its edge k_out, whose plane point is (px, py).
     auto follow = [&](std::uint32_t p, int k_out, double px, double py) {
       for(;;) {
-        const int nb = g.face_neighbor[p][static_cast<std::size_t>(k_out)];
+        const auto& from = g.face_links[p];
+        const int nb = from.nb[k_out];
         if(nb < 0 || ws.stamp[static_cast<std::size_t>(nb)] == key) return;
         const std::size_t f = static_cast<std::size_t>(nb);
         ws.stamp[f] = key;
-        const std::size_t id[3] = {static_cast<std::size_t>(F[3 * f]), static_cast<std::size_t>(F[3 * f + 1]), static_cast<std::size_t>(F[3 * f + 2])};
-        const double sv[3] = {ws.y[id[0]] - t, ws.y[id[1]] - t, ws.y[id[2]] - t};
-        const int k_in = g.neighbor_edge[p][static_cast<std::size_t>(k_out)];
+        const int k_in = from.edge[k_out];
+        const auto& fl = g.face_links[f];
+        // the next face is one of the two other neighbours: start loading both
+        prefetch(&g.face_links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 2 ? 0 : k_in + 1]))]);
+        prefetch(&g.face_links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 0 ? 2 : k_in - 1]))]);
+        const Contour_workspace::Vertex* vr[3] = {&ws.vx[static_cast<std::size_t>(fl.v[0])], &ws.vx[static_cast<std::size_t>(fl.v[1])],
+                                                  &ws.vx[static_cast<std::size_t>(fl.v[2])]};
+        const double sv[3] = {vr[0]->t - t, vr[1]->t - t, vr[2]->t - t};
         if(sv[0] == 0 || sv[1] == 0 || sv[2] == 0 || k_in < 0) { // a corner on the plane: general code
           ws.stack.push_back(static_cast<std::uint32_t>(f));
           return;
@@ -304,10 +327,12 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
         const bool crosses[3] = {p0 != p1, p1 != p2, p2 != p0};
         const int k1 = k_in == 2 ? 0 : k_in + 1, k2 = k1 == 2 ? 0 : k1 + 1;
         const int k_exit = crosses[k1] ? k1 : k2;
-        const std::size_t i = id[k_exit], j = id[(k_exit + 1) % 3];
-        const double si = sv[k_exit], sj = sv[(k_exit + 1) % 3];
+        const int k_next = k_exit == 2 ? 0 : k_exit + 1;
+        const Contour_workspace::Vertex& vi = *vr[k_exit];
+        const Contour_workspace::Vertex& vj = *vr[k_next];
+        const double si = sv[k_exit], sj = sv[k_next];
         const double c = si / (si - sj);
-        const double qx = ws.q[i].x() + c * (ws.q[j].x() - ws.q[i].x()), qy = ws.q[i].y() + c * (ws.q[j].y() - ws.q[i].y());
+        const double qx = vi.x + c * (vj.x - vi.x), qy = vi.y + c * (vj.y - vi.y);
         const double a2 = px * px + py * py, b2 = qx * qx + qy * qy;
         const double dx = qx - px, dy = qy - py;
         double l;
@@ -351,7 +376,7 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
     }
   }
   // Group the intervals by row, sort each row by its lower ends.
-  group_by_row(ws.entries, R, ws.count, ws.next, ws.sorted);
+  group_by_row(ws.entries.data(), ws.entries.size(), R, ws.count, ws.next, ws.sorted);
   // Union per row.
   for(std::size_t r = 0; r < R; ++r) {
     auto first = ws.sorted.begin() + ws.count[r], last = ws.sorted.begin() + ws.count[r + 1];

@@ -121,6 +121,13 @@ public:
           if(face_neighbor[static_cast<std::size_t>(nb)][static_cast<std::size_t>(k2)] == static_cast<int>(f))
             neighbor_edge[f][static_cast<std::size_t>(k)] = static_cast<std::int8_t>(k2);
       }
+    face_links.resize(static_cast<std::size_t>(m));
+    for(std::size_t f = 0; f < static_cast<std::size_t>(m); ++f)
+      for(std::size_t k = 0; k < 3; ++k) {
+        face_links[f].v[k] = a.F(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
+        face_links[f].nb[k] = face_neighbor[f][k];
+        face_links[f].edge[k] = neighbor_edge[f][k];
+      }
   }
 
   /// The normal at vertex v; throws when the faces around it cancel (no defined normal).
@@ -218,6 +225,14 @@ public:
   Kd_tree<3> face_tree, vertex_tree;
   std::vector<std::array<int, 3>> face_neighbor; // across edge (corner k, corner k+1); -1: none
   std::vector<std::array<std::int8_t, 3>> neighbor_edge; // that edge's index in the neighbour
+  /// A face's corners, neighbours and neighbour edges in one cache-line-aligned record (the
+  /// contour walk touches all three for every face it visits).
+  struct alignas(32) Face_link {
+    int v[3];
+    int nb[3];
+    std::int8_t edge[3];
+  };
+  std::vector<Face_link> face_links;
 };
 
 } // namespace internal
