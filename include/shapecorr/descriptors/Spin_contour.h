@@ -20,14 +20,18 @@
 namespace shapecorr {
 
 /// \ingroup PkgShapeCorrDescriptors
-/// A spin contour: a set of 2-D points (alpha, beta) lying on `rows` horizontal lines
-/// `beta_r = 1 - (r + 1/2) 2 / rows` (row 0 on top), coordinates normalized by the support length
-/// L: alpha in [0, 1], beta in [-1, 1]. The points of a row are kept sorted by alpha.
+/// A spin contour: a set of 2-D points (alpha, beta) in normalized coordinates lying on `rows`
+/// horizontal lines `beta_r = beta_first + (r + 1/2) (beta_last - beta_first) / rows`. The Spin
+/// Contour (chapter 3) has beta in [-1, 1] (`beta_first` 1: row 0 on top) and alpha in [0, 1], both
+/// divided by the support length L; the Geodesic Spin Contour (chapter 4) has beta = gd / L in
+/// [0, 1] (row 0 nearest to the point) and alpha = agd divided by its scale. The points of a row
+/// are kept sorted by alpha.
 class Spin_contour {
 public:
   Spin_contour() = default;
-  explicit Spin_contour(std::size_t rows, double support_length = 1.0)
-    : m_rows(rows), m_support(support_length), m_begin(rows + 1, 0u) {}
+  explicit Spin_contour(std::size_t rows, double support_length = 1.0, double beta_first = 1.0, double beta_last = -1.0)
+    : m_rows(rows), m_support(support_length), m_beta0(beta_first),
+      m_step(rows > 0 ? (beta_last - beta_first) / static_cast<double>(rows) : 0.0), m_begin(rows + 1, 0u) {}
 
   std::size_t rows() const { return m_rows; }
   double support_length() const { return m_support; }
@@ -35,7 +39,9 @@ public:
   std::size_t size() const { return m_alpha.size(); }
   bool empty() const { return m_alpha.empty(); }
   /// Normalized beta of row r.
-  double beta(std::size_t r) const { return 1.0 - (static_cast<double>(r) + 0.5) * 2.0 / static_cast<double>(m_rows); }
+  double beta(std::size_t r) const { return m_beta0 + (static_cast<double>(r) + 0.5) * m_step; }
+  /// Distance between two neighbouring rows, in normalized units.
+  double row_spacing() const { return std::abs(m_step); }
   /// The alphas of row r, ascending: [row_begin(r), row_end(r)) of `alphas()`.
   std::size_t row_begin(std::size_t r) const { return m_begin[r]; }
   std::size_t row_end(std::size_t r) const { return m_begin[r + 1]; }
@@ -58,6 +64,7 @@ public:
 private:
   std::size_t m_rows = 0;
   double m_support = 1.0;
+  double m_beta0 = 1.0, m_step = -2.0;
   std::vector<std::uint32_t> m_begin{0u};
   std::vector<float> m_alpha;
 };
@@ -78,7 +85,7 @@ inline double nearest_in_row2(const float* y, std::size_t ny, float a) {
 // Stops early (returning a value >= bound) once the sum exceeds `bound`.
 inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, double bound) {
   const std::size_t R = X.rows();
-  const double h = 2.0 / static_cast<double>(R);
+  const double h = X.row_spacing();
   const float* xa = X.alphas().data();
   const float* ya = Y.alphas().data();
   double sum = 0;
@@ -109,12 +116,14 @@ inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y,
 /// `point_set_l1_distance`). 0 for two empty contours, +infinity when only one is empty.
 /// With `bound`: the computation stops as soon as the result is known to exceed `bound` and then
 /// returns some value > `bound` (matching only needs the distances below the second best).
-/// \throws Invalid_input when the numbers of rows differ
+/// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
 inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y,
                                   double bound = std::numeric_limits<double>::infinity()) {
   if(X.rows() != Y.rows())
     throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
                                                            std::to_string(Y.rows()) + " rows");
+  if(X.beta(0) != Y.beta(0) || X.row_spacing() != Y.row_spacing())
+    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
   if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   const double total = static_cast<double>(X.size() + Y.size());
   const double limit = bound * total;

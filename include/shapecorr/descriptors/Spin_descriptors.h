@@ -138,7 +138,7 @@ public:
   Spin_image face_spin_image(const Oriented_point& op) const { return internal::face_spin_image(m_geometry, op, m_options); }
   /// The Spin Contour (thesis's fast construction), coordinates normalized by the support length.
   Spin_contour spin_contour(const Oriented_point& op) const {
-    thread_local internal::Contour_workspace ws;
+    thread_local internal::Spin_contour_workspace ws;
     return internal::spin_contour(m_geometry, op, m_options, ws);
   }
 

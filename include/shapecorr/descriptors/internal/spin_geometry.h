@@ -6,6 +6,7 @@
 #ifndef SHAPECORR_DESCRIPTORS_INTERNAL_SPIN_GEOMETRY_H
 #define SHAPECORR_DESCRIPTORS_INTERNAL_SPIN_GEOMETRY_H
 
+#include <shapecorr/descriptors/internal/contour_construction.h>
 #include <shapecorr/exceptions.h>
 #include <shapecorr/internal/kd_tree.h>
 #include <shapecorr/mesh/internal/indexed_mesh.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -85,49 +85,8 @@ public:
     for(Eigen::Index v = 0; v < n; ++v) far = std::max(far, (a.V.row(v).transpose() - centroid).norm());
     extent = 2 * far;
     face_tree = Kd_tree<3>(std::move(centers));
-    // Neighbour across each face edge (corner k to k+1); -1 on boundaries and non-manifold edges.
-    face_neighbor.assign(static_cast<std::size_t>(m), {{-1, -1, -1}});
-    std::unordered_map<std::uint64_t, std::pair<int, int>> open_edges; // edge key -> (face, k), or (-2, .) when used 3+ times
-    open_edges.reserve(static_cast<std::size_t>(3 * m));
-    for(Eigen::Index f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k) {
-        const std::uint64_t u = static_cast<std::uint32_t>(a.F(f, k)), v = static_cast<std::uint32_t>(a.F(f, (k + 1) % 3));
-        const std::uint64_t key = std::min(u, v) << 32 | std::max(u, v);
-        auto it = open_edges.find(key);
-        if(it == open_edges.end()) {
-          open_edges.emplace(key, std::make_pair(static_cast<int>(f), k));
-        } else if(it->second.first >= 0 && face_neighbor[static_cast<std::size_t>(it->second.first)][static_cast<std::size_t>(it->second.second)] < 0) {
-          face_neighbor[static_cast<std::size_t>(it->second.first)][static_cast<std::size_t>(it->second.second)] = static_cast<int>(f);
-          face_neighbor[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = it->second.first;
-        } else { // a third face on this edge: no neighbours across it at all
-          if(it->second.first >= 0) {
-            const int f0 = it->second.first, k0 = it->second.second;
-            const int f1 = face_neighbor[static_cast<std::size_t>(f0)][static_cast<std::size_t>(k0)];
-            face_neighbor[static_cast<std::size_t>(f0)][static_cast<std::size_t>(k0)] = -1;
-            if(f1 >= 0)
-              for(auto& nb : face_neighbor[static_cast<std::size_t>(f1)])
-                if(nb == f0) nb = -1;
-            it->second.first = -2;
-          }
-        }
-      }
+    face_links = build_face_links(a);
     vertex_tree = Kd_tree<3>(std::move(verts));
-    neighbor_edge.assign(static_cast<std::size_t>(m), {{-1, -1, -1}});
-    for(std::size_t f = 0; f < static_cast<std::size_t>(m); ++f)
-      for(int k = 0; k < 3; ++k) {
-        const int nb = face_neighbor[f][static_cast<std::size_t>(k)];
-        if(nb < 0) continue;
-        for(int k2 = 0; k2 < 3; ++k2)
-          if(face_neighbor[static_cast<std::size_t>(nb)][static_cast<std::size_t>(k2)] == static_cast<int>(f))
-            neighbor_edge[f][static_cast<std::size_t>(k)] = static_cast<std::int8_t>(k2);
-      }
-    face_links.resize(static_cast<std::size_t>(m));
-    for(std::size_t f = 0; f < static_cast<std::size_t>(m); ++f)
-      for(std::size_t k = 0; k < 3; ++k) {
-        face_links[f].v[k] = a.F(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
-        face_links[f].nb[k] = face_neighbor[f][k];
-        face_links[f].edge[k] = neighbor_edge[f][k];
-      }
   }
 
   /// The normal at vertex v; throws when the faces around it cancel (no defined normal).
@@ -223,16 +182,7 @@ public:
   double extent = 0;          // 2 x the largest distance of a vertex from the centroid (rotation invariant)
   double max_face_radius = 0; // largest distance from a face centre to its corners
   Kd_tree<3> face_tree, vertex_tree;
-  std::vector<std::array<int, 3>> face_neighbor; // across edge (corner k, corner k+1); -1: none
-  std::vector<std::array<std::int8_t, 3>> neighbor_edge; // that edge's index in the neighbour
-  /// A face's corners, neighbours and neighbour edges in one cache-line-aligned record (the
-  /// contour walk touches all three for every face it visits).
-  struct alignas(32) Face_link {
-    int v[3];
-    int nb[3];
-    std::int8_t edge[3];
-  };
-  std::vector<Face_link> face_links;
+  std::vector<Face_link> face_links; // corners, neighbours across edges, for the contour walk
 };
 
 } // namespace internal

@@ -1,0 +1,320 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Internal: the fast contour construction shared by the Spin Contour (chapter 3) and the Geodesic
+// Spin Contour (chapter 4). Both sample a row coordinate t that is linear inside every triangle
+// (the height along the axis; the geodesic distance) on the lines t = 0, 1, ..., R-1, and take on
+// each line the alpha range of every connected piece of the level set (the distance to the axis;
+// the average geodesic distance). The union of the ranges per row gives the contour's end points,
+// and the closing samples on the column grid complete it (ALGORITHMS.md, chapters 3 and 4).
+#ifndef SHAPECORR_DESCRIPTORS_INTERNAL_CONTOUR_CONSTRUCTION_H
+#define SHAPECORR_DESCRIPTORS_INTERNAL_CONTOUR_CONSTRUCTION_H
+
+#include <shapecorr/descriptors/Spin_contour.h>
+#include <shapecorr/mesh/internal/indexed_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace shapecorr {
+namespace internal {
+
+/// A face's corners, neighbours (across edge corner k -> k+1; -1 on boundaries and non-manifold
+/// edges) and the index of that edge in the neighbour, in one aligned record (the contour walk
+/// reads all three for every face it visits).
+struct alignas(32) Face_link {
+  int v[3];
+  int nb[3];
+  std::int8_t edge[3];
+};
+
+inline std::vector<Face_link> build_face_links(const Triangle_arrays& a) {
+  const std::size_t m = a.number_of_faces();
+  std::vector<Face_link> links(m);
+  for(std::size_t f = 0; f < m; ++f)
+    for(std::size_t k = 0; k < 3; ++k) {
+      links[f].v[k] = a.F(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
+      links[f].nb[k] = -1;
+      links[f].edge[k] = -1;
+    }
+  std::unordered_map<std::uint64_t, std::pair<int, int>> open_edges; // edge key -> (face, k), or (-2, .) when used 3+ times
+  open_edges.reserve(3 * m);
+  for(std::size_t f = 0; f < m; ++f)
+    for(int k = 0; k < 3; ++k) {
+      const std::uint64_t u = static_cast<std::uint32_t>(links[f].v[k]), v = static_cast<std::uint32_t>(links[f].v[(k + 1) % 3]);
+      const std::uint64_t key = std::min(u, v) << 32 | std::max(u, v);
+      auto it = open_edges.find(key);
+      if(it == open_edges.end()) {
+        open_edges.emplace(key, std::make_pair(static_cast<int>(f), k));
+      } else if(it->second.first >= 0 && links[static_cast<std::size_t>(it->second.first)].nb[it->second.second] < 0) {
+        links[static_cast<std::size_t>(it->second.first)].nb[it->second.second] = static_cast<int>(f);
+        links[f].nb[k] = it->second.first;
+      } else if(it->second.first >= 0) { // a third face on this edge: no neighbours across it at all
+        const int f0 = it->second.first, k0 = it->second.second;
+        const int f1 = links[static_cast<std::size_t>(f0)].nb[k0];
+        links[static_cast<std::size_t>(f0)].nb[k0] = -1;
+        if(f1 >= 0)
+          for(int& nb : links[static_cast<std::size_t>(f1)].nb)
+            if(nb == f0) nb = -1;
+        it->second.first = -2;
+      }
+    }
+  for(std::size_t f = 0; f < m; ++f)
+    for(int k = 0; k < 3; ++k) {
+      const int nb = links[f].nb[k];
+      if(nb < 0) continue;
+      for(int k2 = 0; k2 < 3; ++k2)
+        if(links[static_cast<std::size_t>(nb)].nb[k2] == static_cast<int>(f)) links[f].edge[k] = static_cast<std::int8_t>(k2);
+    }
+  return links;
+}
+
+// A hint to start loading the cache line at p (no effect where the compiler has no builtin).
+inline void prefetch(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+// Counting sort of (row, value) pairs by row: out holds the values grouped by row, row r in
+// [count[r], count[r + 1]).
+template <typename Value>
+void group_by_row(const std::pair<std::uint32_t, Value>* in, std::size_t n, std::size_t rows, std::vector<std::uint32_t>& count,
+                  std::vector<std::uint32_t>& next, std::vector<Value>& out) {
+  count.assign(rows + 1, 0u);
+  for(std::size_t i = 0; i < n; ++i) ++count[in[i].first + 1];
+  for(std::size_t r = 0; r < rows; ++r) count[r + 1] += count[r];
+  out.resize(n);
+  next.assign(count.begin(), count.end() - 1);
+  for(std::size_t i = 0; i < n; ++i) out[next[in[i].first]++] = in[i].second;
+}
+
+/// Scratch space of one thread's contour constructions; `Vertex` is the section policy's
+/// per-vertex record (its row coordinate `t` and the data alpha is interpolated from).
+template <typename Vertex>
+struct Contour_workspace {
+  std::vector<Vertex> vx;
+  std::vector<std::array<int, 2>> rows;                    // per vertex: floor(t), ceil(t) (clamped to [-1, R])
+  std::vector<std::pair<std::uint32_t, std::pair<double, double>>> entries; // (row, alpha interval)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> face_rows; // (row, face) of every face a row line crosses
+  std::vector<std::uint32_t> bucket;                       // faces grouped by row
+  std::vector<std::uint32_t> stamp;                        // per face: the row walk that visited it last
+  std::uint32_t epoch = 0;
+  std::vector<std::uint32_t> stack;
+  std::vector<std::uint32_t> count, next;
+  std::vector<std::pair<double, double>> sorted;           // intervals grouped by row
+  std::vector<std::vector<std::pair<double, double>>> merged;
+  std::vector<float> row;
+
+  void resize(std::size_t vertices) {
+    vx.resize(vertices);
+    rows.resize(vertices);
+  }
+  /// Sets the floor/ceil rows of vertex i from its row coordinate t (by integer conversion:
+  /// std::floor is a library call without SSE4.1).
+  void set_rows(std::size_t i, double t_i, std::size_t R) {
+    const double c = std::min(static_cast<double>(R), std::max(-1.0, t_i));
+    const int t = static_cast<int>(c);
+    const int fl = t - (static_cast<double>(t) > c ? 1 : 0);
+    rows[i] = {{fl, fl + (static_cast<double>(fl) < c ? 1 : 0)}};
+  }
+};
+
+/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`, rows set with `ws.set_rows`) over the
+/// faces `for_each_face(fn)` visits; `F` holds the faces' corners (3 per face, as in `links`: the
+/// classification pass reads this compact copy). The section policy `S` gives the per-vertex record `S::Vertex`,
+/// the point type on a level line `S::Point`, `S::at(a, b, c)` (the point at a + c (b - a)),
+/// `S::at(a)`, `s.segment(p, q, l, u)` (the alpha range, possibly in squared units, of a segment of a
+/// level line), `s.polygon(points, n, in_plane, l, u)` (the same for a face with corners on the
+/// line: n points, or the whole triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range;
+/// false drops it), `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`.
+/// Alpha is sampled on `cols` columns over [0, alpha_scale] for the closing samples and stored
+/// divided by `alpha_scale`; `out` must have R rows.
+template <typename S, typename FaceVisitor>
+void build_level_set_contour(const std::vector<Face_link>& links, const int* F, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
+                             FaceVisitor&& for_each_face, Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+  typedef typename S::Vertex V;
+  typedef typename S::Point P;
+  const std::size_t m = links.size();
+  ws.merged.resize(R);
+  ws.entries.clear();
+  // 1. The faces each row line crosses (most faces cross none or one), grouped by row; branch-free
+  //    in the common case (at most two rows): both candidate entries are written and the end
+  //    advances by the count.
+  std::size_t n_rows = 0;
+  const int last_row = static_cast<int>(R) - 1;
+  for_each_face([&](std::size_t f) {
+    const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
+    const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
+    const auto& a2 = ws.rows[static_cast<std::size_t>(F[3 * f + 2])];
+    // rows r with min t <= r <= max t: from the smallest ceil to the largest floor
+    const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
+    const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
+    const int count = std::max(0, hi - lo + 1);
+    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 2) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
+    auto* o = ws.face_rows.data() + n_rows;
+    o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
+    o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
+    for(int r = lo + 2; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
+    n_rows += static_cast<std::size_t>(count);
+  });
+  group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
+  if(ws.stamp.size() != m || ws.epoch > 0xFFFFFFFFu - R) {
+    ws.stamp.assign(m, 0);
+    ws.epoch = 0;
+  }
+  // The section of face f with line t as an alpha range [l, u]; 0 when empty, else the bit mask of
+  // the edges (corner k to k+1) through which the section leaves the face.
+  auto section = [&](std::size_t f, double t, double& l, double& u) -> int {
+    const V* w[3] = {&ws.vx[static_cast<std::size_t>(links[f].v[0])], &ws.vx[static_cast<std::size_t>(links[f].v[1])],
+                     &ws.vx[static_cast<std::size_t>(links[f].v[2])]};
+    const double d[3] = {w[0]->t - t, w[1]->t - t, w[2]->t - t};
+    if(d[0] != 0 && d[1] != 0 && d[2] != 0) {
+      // The common case: one vertex alone on its side; the section joins its two edges.
+      const bool p0 = d[0] > 0, p1 = d[1] > 0, p2 = d[2] > 0;
+      if(p0 == p1 && p1 == p2) return 0;
+      const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      s.segment(S::at(*w[k], *w[a], d[k] / (d[k] - d[a])), S::at(*w[k], *w[b], d[k] / (d[k] - d[b])), l, u);
+      return (1 << k) | (1 << b); // edges (k, k+1) and (k+2, k)
+    }
+    P pts[6];
+    int np = 0;
+    for(int k = 0; k < 3; ++k) {
+      const int k2 = (k + 1) % 3;
+      if(d[k] == 0) pts[np++] = S::at(*w[k]);
+      if((d[k] < 0 && d[k2] > 0) || (d[k] > 0 && d[k2] < 0)) pts[np++] = S::at(*w[k], *w[k2], d[k] / (d[k] - d[k2]));
+    }
+    if(np == 0) return 0;
+    s.polygon(pts, np, np == 3 && d[0] == 0 && d[1] == 0 && d[2] == 0, l, u);
+    int edges = 0; // corners on the line: leave through every edge the line meets
+    for(int k = 0; k < 3; ++k)
+      if(d[k] * d[(k + 1) % 3] <= 0) edges |= 1 << k;
+    return edges;
+  };
+  // 2. Per row, walk each connected piece of the section across shared edges: along a connected
+  //    curve alpha takes every value between its extremes, so a piece contributes one interval
+  //    [min l, max u] and the union needs no sorting of per-face intervals.
+  //    In the common case (no corner on the line) a face has exactly two crossing edges, so the
+  //    walk follows the section as a chain, carrying the point on the shared edge: one
+  //    interpolation per face. Faces with a corner on the line go through the general code.
+  auto edge_point = [&](std::size_t f, int k, double t) {
+    const V& i = ws.vx[static_cast<std::size_t>(links[f].v[k])];
+    const V& j = ws.vx[static_cast<std::size_t>(links[f].v[(k + 1) % 3])];
+    const double si = i.t - t, sj = j.t - t;
+    return S::at(i, j, si == sj ? 0.0 : si / (si - sj));
+  };
+  for(std::size_t r = 0; r < R; ++r) {
+    const std::uint32_t key = ++ws.epoch;
+    const double t = static_cast<double>(r);
+    double lmin = 0, umax = 0;
+    // Follows the section from face p out through its edge k_out, whose point on the line is pt.
+    auto follow = [&](std::uint32_t p, int k_out, P pt) {
+      for(;;) {
+        const Face_link& from = links[p];
+        const int nb = from.nb[k_out];
+        if(nb < 0 || ws.stamp[static_cast<std::size_t>(nb)] == key) return;
+        const std::size_t f = static_cast<std::size_t>(nb);
+        ws.stamp[f] = key;
+        const int k_in = from.edge[k_out];
+        const Face_link& fl = links[f];
+        // the next face is one of the two other neighbours: start loading both
+        prefetch(&links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 2 ? 0 : k_in + 1]))]);
+        prefetch(&links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 0 ? 2 : k_in - 1]))]);
+        const V* vr[3] = {&ws.vx[static_cast<std::size_t>(fl.v[0])], &ws.vx[static_cast<std::size_t>(fl.v[1])],
+                          &ws.vx[static_cast<std::size_t>(fl.v[2])]};
+        const double sv[3] = {vr[0]->t - t, vr[1]->t - t, vr[2]->t - t};
+        if(sv[0] == 0 || sv[1] == 0 || sv[2] == 0 || k_in < 0) { // a corner on the line: general code
+          ws.stack.push_back(static_cast<std::uint32_t>(f));
+          return;
+        }
+        // The corners' sides are per vertex, so the entry edge crosses here too and exactly one
+        // other edge does: the exit (chosen without a branch).
+        const bool p0 = sv[0] > 0, p1 = sv[1] > 0, p2 = sv[2] > 0;
+        const bool crosses[3] = {p0 != p1, p1 != p2, p2 != p0};
+        const int k1 = k_in == 2 ? 0 : k_in + 1, k2 = k1 == 2 ? 0 : k1 + 1;
+        const int k_exit = crosses[k1] ? k1 : k2;
+        const int k_next = k_exit == 2 ? 0 : k_exit + 1;
+        const double si = sv[k_exit], sj = sv[k_next];
+        const P q = S::at(*vr[k_exit], *vr[k_next], si / (si - sj));
+        double l, u;
+        s.segment(pt, q, l, u);
+        lmin = std::min(lmin, l);
+        umax = std::max(umax, u);
+        p = static_cast<std::uint32_t>(f);
+        k_out = k_exit;
+        pt = q;
+      }
+    };
+    for(std::uint32_t b = ws.count[r]; b < ws.count[r + 1]; ++b) {
+      const std::uint32_t f0 = ws.bucket[b];
+      if(ws.stamp[f0] == key) continue;
+      ws.stamp[f0] = key;
+      ws.stack.assign(1, f0);
+      lmin = std::numeric_limits<double>::infinity();
+      umax = -std::numeric_limits<double>::infinity();
+      while(!ws.stack.empty()) {
+        const std::uint32_t f = ws.stack.back();
+        ws.stack.pop_back();
+        double l, u;
+        const int edges = section(f, t, l, u);
+        if(!edges) continue;
+        lmin = std::min(lmin, l);
+        umax = std::max(umax, u);
+        for(int k = 0; k < 3; ++k)
+          if(edges >> k & 1) follow(f, k, edge_point(f, k, t));
+      }
+      if(lmin <= umax && s.keep(lmin, umax)) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, umax}});
+    }
+  }
+  // 3. Group the intervals by row, sort each row by its lower ends, union.
+  group_by_row(ws.entries.data(), ws.entries.size(), R, ws.count, ws.next, ws.sorted);
+  for(std::size_t r = 0; r < R; ++r) {
+    auto first = ws.sorted.begin() + ws.count[r], last = ws.sorted.begin() + ws.count[r + 1];
+    auto& merged = ws.merged[r];
+    merged.clear();
+    std::sort(first, last, [](const std::pair<double, double>& a, const std::pair<double, double>& b) { return a.first < b.first; });
+    for(auto it = first; it != last; ++it) {
+      const auto& iv = *it;
+      if(!merged.empty() && iv.first <= merged.back().second + s.merge_eps) merged.back().second = std::max(merged.back().second, iv.second);
+      else merged.push_back(iv);
+    }
+    for(auto& iv : merged) iv = {s.finish(iv.first), s.finish(iv.second)};
+  }
+  // 4. End points, and the closing samples of I_r \ I_{r-1} and I_r \ I_{r+1} on the column grid.
+  auto contains = [&](long row, double a) {
+    if(row < 0 || row >= static_cast<long>(R)) return false;
+    const auto& iv = ws.merged[static_cast<std::size_t>(row)];
+    auto it = std::upper_bound(iv.begin(), iv.end(), std::make_pair(a, std::numeric_limits<double>::infinity()));
+    return it != iv.begin() && a <= std::prev(it)->second;
+  };
+  const double dc = alpha_scale / static_cast<double>(cols);
+  for(std::size_t r = 0; r < R; ++r) {
+    ws.row.clear();
+    for(const auto& seg : ws.merged[r]) {
+      ws.row.push_back(static_cast<float>(seg.first / alpha_scale));
+      if(seg.second > seg.first) ws.row.push_back(static_cast<float>(seg.second / alpha_scale));
+      const long c0 = std::max(0L, static_cast<long>(std::ceil(seg.first / dc - 0.5)));
+      const long c1 = std::min(static_cast<long>(cols) - 1, static_cast<long>(std::floor(seg.second / dc - 0.5)));
+      for(long k = c0; k <= c1; ++k) {
+        const double a = (static_cast<double>(k) + 0.5) * dc;
+        if(!contains(static_cast<long>(r) - 1, a) || !contains(static_cast<long>(r) + 1, a)) ws.row.push_back(static_cast<float>(a / alpha_scale));
+      }
+    }
+    std::sort(ws.row.begin(), ws.row.end());
+    ws.row.erase(std::unique(ws.row.begin(), ws.row.end()), ws.row.end());
+    out.append_row(r, ws.row.begin(), ws.row.end());
+  }
+}
+
+} // namespace internal
+} // namespace shapecorr
+
+#endif
