@@ -11,6 +11,7 @@
 #include <shapecorr/sampling/furthest_point_sampling.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <numeric>
@@ -61,6 +62,39 @@ inline Eigen::VectorXd global_agd(const Eigen::VectorXd& A,
   Eigen::VectorXd agd(static_cast<Eigen::Index>(n));
   for(Eigen::Index v = 0; v < agd.size(); ++v)
     agd[v] = den[v] > 0 ? num[v] / den[v] : std::numeric_limits<double>::quiet_NaN();
+  return agd;
+}
+
+/// Local agd of every vertex (radius-limited fast marching from each, in parallel).
+template <typename TriangleMesh>
+std::vector<double> local_average_geodesic_distances(const Fast_marching_geodesics<TriangleMesh>& engine, double radius,
+                                                     const std::function<void(std::size_t, std::size_t)>& progress) {
+  const std::size_t n = engine.number_of_vertices();
+  const Eigen::VectorXd A = incident_triangle_areas(engine.arrays());
+  std::vector<double> agd(n, 0.0);
+  const unsigned threads = engine.number_of_threads();
+  std::vector<typename Fast_marching_geodesics<TriangleMesh>::Workspace> ws(threads);
+  std::vector<typename Fast_marching_geodesics<TriangleMesh>::Ball> balls(threads);
+  const std::size_t chunk = 64;
+  std::mutex mtx;
+  std::size_t done = 0;
+  parallel_for((n + chunk - 1) / chunk, threads, [&](std::size_t c, unsigned tid) {
+    for(std::size_t q = c * chunk; q < std::min(n, (c + 1) * chunk); ++q) {
+      engine.distances_within(q, radius, balls[tid], ws[tid]);
+      double num = 0, den = 0;
+      for(const auto& p : balls[tid]) {
+        if(p.second >= radius) continue;
+        num += A[static_cast<Eigen::Index>(p.first)] * p.second;
+        den += A[static_cast<Eigen::Index>(p.first)];
+      }
+      agd[q] = den > 0 ? num / den : 0.0;
+    }
+    if(progress) {
+      std::lock_guard<std::mutex> lock(mtx);
+      done = std::min(n, done + chunk);
+      progress(done, n);
+    }
+  });
   return agd;
 }
 
@@ -131,33 +165,8 @@ void compute_local_average_geodesic_distance(const TriangleMesh& tm, double radi
   if(!(radius > 0))
     throw Invalid_input(Mesh_defect::invalid_argument, "local average geodesic distance: the radius must be positive");
   Fast_marching_geodesics<TriangleMesh> engine(tm, np);
-  const auto progress = internal::progress_of(np);
+  const std::vector<double> agd = internal::local_average_geodesic_distances(engine, radius, internal::progress_of(np));
   const std::size_t n = engine.number_of_vertices();
-  const Eigen::VectorXd A = internal::incident_triangle_areas(engine.arrays());
-  std::vector<double> agd(n, 0.0);
-  const unsigned threads = engine.number_of_threads();
-  std::vector<typename Fast_marching_geodesics<TriangleMesh>::Workspace> ws(threads);
-  std::vector<typename Fast_marching_geodesics<TriangleMesh>::Ball> balls(threads);
-  const std::size_t chunk = 64;
-  std::mutex mtx;
-  std::size_t done = 0;
-  internal::parallel_for((n + chunk - 1) / chunk, threads, [&](std::size_t c, unsigned tid) {
-    for(std::size_t q = c * chunk; q < std::min(n, (c + 1) * chunk); ++q) {
-      engine.distances_within(q, radius, balls[tid], ws[tid]);
-      double num = 0, den = 0;
-      for(const auto& p : balls[tid]) {
-        if(p.second >= radius) continue;
-        num += A[static_cast<Eigen::Index>(p.first)] * p.second;
-        den += A[static_cast<Eigen::Index>(p.first)];
-      }
-      agd[q] = den > 0 ? num / den : 0.0;
-    }
-    if(progress) {
-      std::lock_guard<std::mutex> lock(mtx);
-      done = std::min(n, done + chunk);
-      progress(done, n);
-    }
-  });
   for(std::size_t i = 0; i < n; ++i) put(agd_map, engine.vertex(i), agd[i]);
 }
 

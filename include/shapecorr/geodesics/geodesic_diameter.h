@@ -37,11 +37,22 @@ double diameter_by_sweeps(const GeodesicDistanceEngine& engine, std::size_t star
   return best;
 }
 
+/// The vertex farthest from the vertices' centroid: a start for the sweeps that does not depend
+/// on the numbering of the vertices.
+inline std::size_t canonical_start_vertex(const Triangle_arrays& a) {
+  if(a.V.rows() == 0) return 0;
+  const Eigen::RowVector3d c = a.V.colwise().mean();
+  Eigen::Index far = 0;
+  (a.V.rowwise() - c).rowwise().squaredNorm().maxCoeff(&far);
+  return static_cast<std::size_t>(far);
+}
+
 } // namespace internal
 
 /// \ingroup PkgShapeCorrGeodesics
 /// Geodesic diameter D: the largest geodesic distance between two vertices (within a component).
-/// Computed by iterated farthest-point sweeps (each one a single-source query); exact for the
+/// Computed by iterated farthest-point sweeps (each one a single-source query) from the vertex
+/// farthest from the centroid (independent of the vertex numbering); exact for the
 /// chosen backend on convex-like and elongated shapes, a lower bound in general. For the exact
 /// maximum over all pairs use `Geodesic_distance_matrix::diameter()`.
 /// \param np `geodesic_method`, `geodesic_engine`, `number_of_iterations` (sweeps, default 6),
@@ -52,7 +63,7 @@ double geodesic_diameter(const TriangleMesh& tm, const NamedParameters& np = CGA
   using parameters::get_parameter;
   const int sweeps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 6);
   return internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
-    return internal::diameter_by_sweeps(engine, 0, sweeps);
+    return internal::diameter_by_sweeps(engine, internal::canonical_start_vertex(engine.arrays()), sweeps);
   });
 }
 

@@ -40,3 +40,8 @@ SHAPECORR_add_named_parameter(central_radius_t, central_radius, central_radius)
 SHAPECORR_add_named_parameter(lrf_radius_t, lrf_radius, lrf_radius)
 SHAPECORR_add_named_parameter(support_angle_t, support_angle, support_angle)
 SHAPECORR_add_named_parameter(face_samples_per_bin_t, face_samples_per_bin, face_samples_per_bin)
+// geodesic spin descriptors
+SHAPECORR_add_named_parameter(support_fraction_t, support_fraction, support_fraction)
+SHAPECORR_add_named_parameter(agd_radius_fraction_t, agd_radius_fraction, agd_radius_fraction)
+SHAPECORR_add_named_parameter(geodesic_diameter_t, geodesic_diameter, geodesic_diameter)
+SHAPECORR_add_named_parameter(agd_scale_t, agd_scale, agd_scale)

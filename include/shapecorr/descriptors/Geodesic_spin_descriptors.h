@@ -1,0 +1,370 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Geodesic_spin_descriptors.h
+/// The Geodesic Spin Contour and the geodesic spin image (thesis chapter 4): spin coordinates
+/// replaced by the isometry invariants (average geodesic distance, geodesic distance).
+#ifndef SHAPECORR_DESCRIPTORS_GEODESIC_SPIN_DESCRIPTORS_H
+#define SHAPECORR_DESCRIPTORS_GEODESIC_SPIN_DESCRIPTORS_H
+
+#include <shapecorr/descriptors/Spin_contour.h>
+#include <shapecorr/descriptors/Spin_image.h>
+#include <shapecorr/descriptors/internal/contour_construction.h>
+#include <shapecorr/geodesics/Fast_marching_geodesics.h>
+#include <shapecorr/geodesics/average_geodesic_distance.h>
+#include <shapecorr/geodesics/geodesic_diameter.h>
+#include <shapecorr/internal/parallel.h>
+#include <shapecorr/internal/progress.h>
+#include <shapecorr/parameters.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shapecorr {
+namespace internal {
+
+// The section policy of the Geodesic Spin Contour (see build_level_set_contour): gd (the row
+// coordinate) and agd are linear inside a triangle, so the alpha range of a piece of an isoline
+// gd = beta is [min, max] of agd at its points.
+struct Geodesic_section {
+  struct alignas(16) Vertex {
+    double a, t; // agd, gd / h - 1/2 (row r lies at t = r)
+  };
+  typedef double Point;
+  static Point at(const Vertex& a, const Vertex& b, double c) { return a.a + c * (b.a - a.a); }
+  static Point at(const Vertex& a) { return a.a; }
+  double merge_eps = 0;
+  void segment(Point p, Point q, double& l, double& u) const {
+    l = std::min(p, q);
+    u = std::max(p, q);
+  }
+  void polygon(const Point* p, int np, bool, double& l, double& u) const {
+    l = *std::min_element(p, p + np);
+    u = *std::max_element(p, p + np);
+  }
+  bool keep(double&, double&) const { return true; }
+  double finish(double x) const { return x; }
+};
+
+} // namespace internal
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The Geodesic Spin Contour (GSC) and the geodesic spin image of the vertices of a mesh (thesis
+/// chapter 4, ALGORITHMS.md): for a point P, every surface point Q gets the coordinates
+/// `(alpha, beta) = (agd(Q), gd(P, Q))`, agd the average geodesic distance (global, or local
+/// within radius r), gd the geodesic distance; only the geodesic disc gd <= L enters.
+///
+/// The contour is built as the Spin Contour (fast construction): gd and agd are taken linear in
+/// each triangle; for each of `rows` isolines gd = beta_r = (r + 1/2) L / rows the alpha range of
+/// each connected piece of the isoline, their union, the end points, and closing samples on
+/// `columns` alpha samples. Coordinates are normalized to [0, 1] before comparing: **beta by L,
+/// alpha by `alpha_scale()`**, the geodesic diameter D by default (ALGORITHMS.md's choice; agd
+/// never exceeds D). Compare contours with `contour_l1_distance` (the same function as the rigid
+/// Spin Contour), images with `spin_image_correlation`.
+///
+/// Geodesic distances from P come from radius-limited fast marching (radius L plus the longest
+/// edge, so that every triangle an isoline crosses has all its distances); the agd of all
+/// vertices and the diameter are computed once at construction.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
+///
+/// Named parameters of the constructor:
+/// | name | meaning | type | default |
+/// |---|---|---|---|
+/// | `vertex_point_map`, `vertex_index_map` | positions, 0-based indices | property maps | the mesh's |
+/// | `support_fraction` | L / D | `double` | 0.2 |
+/// | `agd_radius_fraction` | r / D for the local agd; 0 selects the global agd | `double` | 0.15 |
+/// | `number_of_sources` | global agd: furthest-point sources averaged | `std::size_t` | 100 |
+/// | `geodesic_diameter` | D in mesh units (e.g. the whole shape's D for a part of it) | `double` | computed (farthest-point sweeps) |
+/// | `agd_scale` | the alpha normalization, mesh units | `double` | D |
+/// | `image_rows`, `image_columns` | beta samples (rows), alpha samples (columns) | `std::size_t` | 64, 64 |
+/// | `number_of_threads` | threads of the batch function and of the agd | `unsigned` | all |
+/// | `progress_callback` | `f(done, total)` during the agd | `std::function<void(size_t, size_t)>` | none |
+///
+/// \throws Invalid_input for an empty mesh, non-triangle faces, non-finite coordinates or
+/// parameters out of range
+template <typename TriangleMesh>
+class Geodesic_spin_descriptors {
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// (vertex index, geodesic distance) pairs: a geodesic ball around a point.
+  typedef std::vector<std::pair<std::size_t, double>> Ball;
+
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Geodesic_spin_descriptors(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+    : m_engine(tm, np), m_id(next_id()) {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    const internal::Triangle_arrays& a = m_engine.arrays();
+    const std::size_t n = a.number_of_vertices(), m = a.number_of_faces();
+    if(n == 0 || m == 0) throw Invalid_input(Mesh_defect::empty_mesh, "geodesic spin descriptors: the mesh has no vertex or no face");
+    if(!a.V.allFinite()) throw Invalid_input(Mesh_defect::non_finite_coordinate, "geodesic spin descriptors: a vertex has a non-finite coordinate");
+    const double support_fraction = choose_parameter(get_parameter(np, internal_np::support_fraction), 0.2);
+    const double radius_fraction = choose_parameter(get_parameter(np, internal_np::agd_radius_fraction), 0.15);
+    m_rows = choose_parameter(get_parameter(np, internal_np::image_rows), std::size_t(64));
+    m_cols = choose_parameter(get_parameter(np, internal_np::image_columns), std::size_t(64));
+    if(!(support_fraction > 0) || !std::isfinite(support_fraction))
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: support_fraction must be positive");
+    if(!(radius_fraction >= 0) || !std::isfinite(radius_fraction))
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_radius_fraction must be >= 0 (0: global agd)");
+    if(m_rows < 2 || m_cols < 1)
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: need at least 2 rows and 1 column");
+    m_diameter = choose_parameter(get_parameter(np, internal_np::geodesic_diameter), -1.0);
+    if(m_diameter < 0) m_diameter = internal::diameter_by_sweeps(m_engine, internal::canonical_start_vertex(a), 6);
+    if(!(m_diameter > 0) || !std::isfinite(m_diameter))
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: the geodesic diameter is zero or not finite");
+    m_support = support_fraction * m_diameter;
+    m_radius = radius_fraction * m_diameter;
+    m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale), m_diameter);
+    if(!(m_alpha_scale > 0) || !std::isfinite(m_alpha_scale))
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_scale must be positive");
+    // the average geodesic distance of every vertex
+    if(m_radius > 0) {
+      m_agd = internal::local_average_geodesic_distances(m_engine, m_radius, internal::progress_of(np));
+    } else {
+      m_agd.assign(n, 0.0);
+      compute_average_geodesic_distance(tm, Agd_writer{&m_agd, &m_engine}, np);
+    }
+    // topology: faces with their neighbours, faces around each vertex, the longest edge
+    m_links = internal::build_face_links(a);
+    m_vertex_faces_begin.assign(n + 1, 0);
+    for(std::size_t f = 0; f < m; ++f)
+      for(int k = 0; k < 3; ++k) ++m_vertex_faces_begin[static_cast<std::size_t>(m_links[f].v[k]) + 1];
+    for(std::size_t v = 0; v < n; ++v) m_vertex_faces_begin[v + 1] += m_vertex_faces_begin[v];
+    m_vertex_faces.resize(3 * m);
+    std::vector<std::uint32_t> next(m_vertex_faces_begin.begin(), m_vertex_faces_begin.end() - 1);
+    double longest = 0;
+    for(std::size_t f = 0; f < m; ++f)
+      for(int k = 0; k < 3; ++k) {
+        m_vertex_faces[next[static_cast<std::size_t>(m_links[f].v[k])]++] = static_cast<std::uint32_t>(f);
+        longest = std::max(longest, (a.point(static_cast<std::size_t>(m_links[f].v[k])) - a.point(static_cast<std::size_t>(m_links[f].v[(k + 1) % 3]))).norm());
+      }
+    m_ball_radius = m_support + 1.01 * longest;
+    // A(Q)/3: the share of a vertex in the area (the geodesic spin image's weights)
+    const Eigen::VectorXd A = internal::incident_triangle_areas(a);
+    m_vertex_area.resize(n);
+    for(std::size_t v = 0; v < n; ++v) m_vertex_area[v] = A[static_cast<Eigen::Index>(v)] / 3.0;
+    m_threads = m_engine.number_of_threads();
+  }
+
+  /// Geodesic diameter D (mesh units).
+  double geodesic_diameter() const { return m_diameter; }
+  /// Support length L (mesh units).
+  double support_length() const { return m_support; }
+  /// Radius r of the local agd (mesh units); 0 for the global agd.
+  double agd_radius() const { return m_radius; }
+  /// The alpha normalization (mesh units).
+  double alpha_scale() const { return m_alpha_scale; }
+  std::size_t rows() const { return m_rows; }
+  std::size_t columns() const { return m_cols; }
+  std::size_t number_of_vertices() const { return m_engine.number_of_vertices(); }
+  std::size_t index(vertex_descriptor v) const { return m_engine.index(v); }
+  vertex_descriptor vertex(std::size_t i) const { return m_engine.vertex(i); }
+  /// The average geodesic distance of every vertex (engine's index order), mesh units.
+  const std::vector<double>& average_geodesic_distances() const { return m_agd; }
+  /// The fast-marching engine (also usable for other distance queries).
+  const Fast_marching_geodesics<TriangleMesh>& geodesic_engine() const { return m_engine; }
+
+  /// The geodesic ball of vertex i that the descriptors need (radius L plus the longest edge).
+  void support_ball(std::size_t i, Ball& ball) const { m_engine.distances_within(i, m_ball_radius, ball, state().fmm); }
+  /// The radius `support_ball` marches to: distances given to the `Ball` overloads must cover it.
+  double support_ball_radius() const { return m_ball_radius; }
+
+  /// The Geodesic Spin Contour of vertex v.
+  Spin_contour geodesic_spin_contour(vertex_descriptor v) const { return contour_of(m_engine.index(v), state()); }
+  /// The Geodesic Spin Contour from the geodesic distances of a point to the vertices of
+  /// `ball` (for instance a row of an all-pairs matrix; every vertex within
+  /// `support_ball_radius()` must be in it, others may be).
+  Spin_contour geodesic_spin_contour(const Ball& ball) const { return contour_from(ball, state()); }
+  /// The geodesic spin image of vertex v: rows over beta = gd in [0, L] (row 0 at gd = 0),
+  /// columns over alpha = agd in [0, alpha_scale()], each vertex of the disc splatted bilinearly
+  /// with weight A(Q)/3.
+  Spin_image geodesic_spin_image(vertex_descriptor v) const {
+    Thread_state& st = state();
+    support_ball(m_engine.index(v), st.ball);
+    return image_from(st.ball);
+  }
+  Spin_image geodesic_spin_image(const Ball& ball) const { return image_from(ball); }
+
+  /// The contours of many vertices (engine indices) in parallel; `progress(done, total)`.
+  std::vector<Spin_contour> geodesic_spin_contours(const std::vector<std::size_t>& indices,
+                                                   const std::function<void(std::size_t, std::size_t)>& progress = {}) const {
+    return for_each_index<Spin_contour>(indices, [&](std::size_t i, Thread_state& st) { return contour_of(i, st); }, progress);
+  }
+  std::vector<Spin_image> geodesic_spin_images(const std::vector<std::size_t>& indices,
+                                               const std::function<void(std::size_t, std::size_t)>& progress = {}) const {
+    return for_each_index<Spin_image>(indices, [&](std::size_t i, Thread_state& st) {
+      support_ball(i, st.ball, st);
+      return image_from(st.ball);
+    }, progress);
+  }
+
+private:
+  // writes the global agd into m_agd by the engine's vertex indices
+  struct Agd_writer {
+    std::vector<double>* agd;
+    const Fast_marching_geodesics<TriangleMesh>* engine;
+    friend void put(const Agd_writer& w, vertex_descriptor v, double x) { (*w.agd)[w.engine->index(v)] = x; }
+  };
+  // One thread's scratch state (for the object it was last used with).
+  struct Thread_state {
+    std::uint64_t owner = 0;
+    typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
+    Ball ball;
+    internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
+    std::vector<std::uint32_t> face_seen;
+    std::uint32_t epoch = 0;
+  };
+  static std::uint64_t next_id() {
+    static std::atomic<std::uint64_t> counter(0);
+    return ++counter;
+  }
+  // The calling thread's state, reset when it was last used with another object.
+  Thread_state& state() const {
+    thread_local Thread_state st;
+    prepare(st);
+    return st;
+  }
+  void prepare(Thread_state& st) const {
+    if(st.owner == m_id) return;
+    st.owner = m_id;
+    const std::size_t n = number_of_vertices();
+    st.cws.resize(n);
+    for(std::size_t v = 0; v < n; ++v) unset(st, v);
+    st.face_seen.assign(m_links.size(), 0u);
+    st.epoch = 0;
+  }
+  void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
+  // A vertex outside the ball: beyond the last row.
+  void unset(Thread_state& st, std::size_t v) const {
+    const double far = static_cast<double>(m_rows) + 2.0;
+    st.cws.vx[v] = {0.0, far};
+    st.cws.set_rows(v, far, m_rows);
+  }
+  Spin_contour contour_of(std::size_t i, Thread_state& st) const {
+    support_ball(i, st.ball, st);
+    return contour_from(st.ball, st);
+  }
+  Spin_contour contour_from(const Ball& ball, Thread_state& st) const {
+    const std::size_t R = m_rows;
+    const double inv_h = static_cast<double>(R) / m_support;
+    const std::size_t n = number_of_vertices();
+    for(const auto& p : ball) {
+      if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
+      const double t = p.second * inv_h - 0.5;
+      st.cws.vx[p.first] = {m_agd[p.first], t};
+      st.cws.set_rows(p.first, t, R);
+    }
+    if(st.epoch == 0xFFFFFFFFu) {
+      std::fill(st.face_seen.begin(), st.face_seen.end(), 0u);
+      st.epoch = 0;
+    }
+    const std::uint32_t key = ++st.epoch;
+    internal::Geodesic_section sec;
+    sec.merge_eps = 1e-12 * m_alpha_scale;
+    Spin_contour c(R, m_support, 0.0, 1.0);
+    internal::build_level_set_contour(m_links, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
+      // the faces around the vertices inside the disc: every face an isoline crosses
+      for(const auto& p : ball) {
+        if(!(p.second < m_support)) continue;
+        for(std::uint32_t k = m_vertex_faces_begin[p.first]; k < m_vertex_faces_begin[p.first + 1]; ++k) {
+          const std::uint32_t f = m_vertex_faces[k];
+          if(st.face_seen[f] == key) continue;
+          st.face_seen[f] = key;
+          visit(f);
+        }
+      }
+    }, st.cws, c);
+    for(const auto& p : ball) unset(st, p.first);
+    return c;
+  }
+  Spin_image image_from(const Ball& ball) const {
+    Spin_image img(m_rows, m_cols, m_support);
+    const long R = static_cast<long>(m_rows), C = static_cast<long>(m_cols);
+    for(const auto& p : ball) {
+      if(p.first >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin image: a vertex index of the ball is out of range");
+      if(!(p.second <= m_support)) continue;
+      const double u = m_agd[p.first] / m_alpha_scale * static_cast<double>(m_cols) - 0.5;
+      const double v = p.second / m_support * static_cast<double>(m_rows) - 0.5;
+      const double fu = std::floor(u), fv = std::floor(v);
+      const double du = u - fu, dv = v - fv;
+      const long c0 = static_cast<long>(fu), r0 = static_cast<long>(fv);
+      const double w = m_vertex_area[p.first];
+      const double ws[4] = {(1 - du) * (1 - dv), du * (1 - dv), (1 - du) * dv, du * dv};
+      const long rs[4] = {r0, r0, r0 + 1, r0 + 1}, cs[4] = {c0, c0 + 1, c0, c0 + 1};
+      for(int k = 0; k < 4; ++k)
+        if(rs[k] >= 0 && rs[k] < R && cs[k] >= 0 && cs[k] < C && ws[k] > 0)
+          img.at(static_cast<std::size_t>(rs[k]), static_cast<std::size_t>(cs[k])) += static_cast<float>(w * ws[k]);
+    }
+    return img;
+  }
+  template <typename Descriptor, typename Fn>
+  std::vector<Descriptor> for_each_index(const std::vector<std::size_t>& indices, Fn&& fn,
+                                         const std::function<void(std::size_t, std::size_t)>& progress) const {
+    for(std::size_t i : indices)
+      if(i >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: vertex index " + std::to_string(i) + " out of range");
+    std::vector<Descriptor> out(indices.size());
+    std::vector<Thread_state> states(m_threads);
+    for(auto& st : states) prepare(st);
+    std::atomic<std::size_t> done(0);
+    std::mutex report;
+    internal::parallel_for(indices.size(), m_threads, [&](std::size_t k, unsigned tid) {
+      out[k] = fn(indices[k], states[tid]);
+      const std::size_t d = ++done;
+      if(progress && (d % 64 == 0 || d == indices.size())) {
+        std::lock_guard<std::mutex> lock(report);
+        progress(d, indices.size());
+      }
+    });
+    return out;
+  }
+
+  Fast_marching_geodesics<TriangleMesh> m_engine;
+  std::uint64_t m_id;
+  std::size_t m_rows = 64, m_cols = 64;
+  double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_ball_radius = 0;
+  std::vector<double> m_agd, m_vertex_area;
+  std::vector<internal::Face_link> m_links;
+  std::vector<std::uint32_t> m_vertex_faces_begin, m_vertex_faces;
+  unsigned m_threads = 1;
+};
+
+/// \ingroup PkgShapeCorrDescriptors
+/// Geodesic Spin Contours of the vertices of `vertices`, in parallel, written into `contours` (a
+/// `WritablePropertyMap` from `vertex_descriptor` to `Spin_contour`); compare them with
+/// `contour_l1_distance`. For several calls on one mesh build one `Geodesic_spin_descriptors`.
+/// \param np the named parameters of `Geodesic_spin_descriptors`, and `progress_callback`
+template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
+void compute_geodesic_spin_contours(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap contours,
+                                    const NamedParameters& np = CGAL::parameters::default_values()) {
+  const Geodesic_spin_descriptors<TriangleMesh> gs(tm, np);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vs(vertices.begin(), vertices.end());
+  std::vector<std::size_t> ids;
+  for(auto v : vs) ids.push_back(gs.index(v));
+  const std::vector<Spin_contour> c = gs.geodesic_spin_contours(ids, internal::progress_of(np));
+  for(std::size_t i = 0; i < vs.size(); ++i) put(contours, vs[i], c[i]);
+}
+
+/// \ingroup PkgShapeCorrDescriptors
+/// Geodesic spin images of the vertices of `vertices`, as `compute_geodesic_spin_contours`.
+template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
+void compute_geodesic_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
+                                  const NamedParameters& np = CGAL::parameters::default_values()) {
+  const Geodesic_spin_descriptors<TriangleMesh> gs(tm, np);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vs(vertices.begin(), vertices.end());
+  std::vector<std::size_t> ids;
+  for(auto v : vs) ids.push_back(gs.index(v));
+  const std::vector<Spin_image> c = gs.geodesic_spin_images(ids, internal::progress_of(np));
+  for(std::size_t i = 0; i < vs.size(); ++i) put(images, vs[i], c[i]);
+}
+
+} // namespace shapecorr
+
+#endif

@@ -1,0 +1,264 @@
+// Geodesic Spin Contour (thesis chapter 4): invariance under an exact isometry (a bent strip), under
+// vertex renumbering, locality (deleting far parts changes nothing), agreement of the fast
+// construction with the image-then-contour definition, the geodesic spin image, errors; over
+// Surface_mesh and Polyhedron_3.
+#include "spectral/spectral_test_helpers.h"
+#include "test_meshes.h"
+
+#include <shapecorr/descriptors.h>
+#include <shapecorr/mesh/primitives.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace SP = shapecorr::parameters;
+
+namespace {
+
+// A W x H strip, flat (bend = 0) or rolled around an axis parallel to y with radius W / (bend pi):
+// an exact isometry of the flat strip (the vertices lie on the rolled surface).
+template <typename Mesh>
+void make_strip(Mesh& m, int nx, int ny, double W, double H, double bend) {
+  shapecorr::make_grid(m, nx, ny, W, H);
+  if(bend == 0) return;
+  const double rho = W / (bend * CGAL_PI);
+  test::transform_points(m, [rho](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(rho * std::sin(p.x() / rho), p.y(), rho * (1 - std::cos(p.x() / rho)));
+  });
+}
+
+// A torus with a smooth bump field (few symmetries), as a soup, optionally renumbered.
+void bumpy_torus_soup(std::vector<std::array<double, 3>>& P, std::vector<std::array<std::size_t, 3>>& T) {
+  test::Surface_mesh t;
+  shapecorr::make_torus(t, 1.0, 0.35, 40, 16);
+  P.clear();
+  T.clear();
+  for(auto v : t.vertices()) {
+    const auto& p = t.point(v);
+    const double s = 1.0 + 0.12 * std::sin(2 * p.x() + 0.5) * std::cos(3 * p.y()) + 0.05 * p.x();
+    P.push_back({s * p.x(), s * p.y(), p.z() * (1 + 0.2 * p.x())});
+  }
+  for(auto f : t.faces()) {
+    std::array<std::size_t, 3> tri;
+    int k = 0;
+    for(auto v : vertices_around_face(t.halfedge(f), t)) tri[static_cast<std::size_t>(k++)] = v.idx();
+    T.push_back(tri);
+  }
+}
+
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list(const Mesh& m) {
+  return test::vertices_in_index_order(m);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("GSC is invariant under an exact isometry: a flat and a rolled strip", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  TestType flat, rolled;
+  make_strip(flat, 60, 15, 4.0, 1.0, 0.0);
+  make_strip(rolled, 60, 15, 4.0, 1.0, 1.0); // rolled into a half cylinder
+  const double D = std::sqrt(16.0 + 1.0);     // the flat strip's diameter: its diagonal
+  for(double r : {0.0, 0.15}) {
+    INFO("agd radius fraction " << r);
+    const auto np = SP::support_fraction(0.3).agd_radius_fraction(r).number_of_sources(0).geodesic_diameter(D);
+    const shapecorr::Geodesic_spin_descriptors<TestType> a(flat, np), b(rolled, np);
+    const auto va = vertex_list(flat), vb = vertex_list(rolled);
+    std::vector<std::size_t> ids;
+    for(int j : {2, 7, 12})
+      for(int i : {3, 17, 30, 44, 57}) ids.push_back(static_cast<std::size_t>(j * 61 + i));
+    for(std::size_t i : ids) {
+      const auto ca = a.geodesic_spin_contour(va[i]), cb = b.geodesic_spin_contour(vb[i]);
+      REQUIRE(ca.size() > 10);
+      const double same = shapecorr::contour_l1_distance(ca, cb);
+      CHECK(same < 0.01);
+      // a vertex elsewhere on the strip (not a mirror image of i) is much farther
+      const std::size_t other = (i + 61 * 5 + 11) % (61 * 16);
+      const double diff = shapecorr::contour_l1_distance(ca, b.geodesic_spin_contour(vb[other]));
+      CHECK(diff > 4 * same);
+    }
+    // the agd itself is isometry invariant
+    for(std::size_t i = 0; i < va.size(); ++i)
+      CHECK(a.average_geodesic_distances()[i] == Approx(b.average_geodesic_distances()[i]).epsilon(0.01));
+  }
+}
+
+TEMPLATE_TEST_CASE("GSC is invariant under vertex renumbering", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  std::vector<std::array<double, 3>> P, P2;
+  std::vector<std::array<std::size_t, 3>> T, T2;
+  bumpy_torus_soup(P, T);
+  std::vector<std::size_t> perm(P.size()); // new index of old vertex i
+  std::iota(perm.begin(), perm.end(), std::size_t(0));
+  std::shuffle(perm.begin(), perm.end(), std::mt19937(7));
+  P2.resize(P.size());
+  for(std::size_t i = 0; i < P.size(); ++i) P2[perm[i]] = P[i];
+  for(const auto& t : T) T2.push_back({perm[t[0]], perm[t[1]], perm[t[2]]});
+  std::reverse(T2.begin(), T2.end());
+  TestType a, b;
+  shapecorr::internal::soup_to_mesh(P, T, a);
+  shapecorr::internal::soup_to_mesh(P2, T2, b);
+  const auto np = SP::support_fraction(0.25).agd_radius_fraction(0.1);
+  const shapecorr::Geodesic_spin_descriptors<TestType> ga(a, np), gb(b, np);
+  CHECK(ga.geodesic_diameter() == Approx(gb.geodesic_diameter()).epsilon(1e-9));
+  const auto va = vertex_list(a), vb = vertex_list(b);
+  for(std::size_t i = 0; i < P.size(); i += 37) {
+    const auto ca = ga.geodesic_spin_contour(va[i]), cb = gb.geodesic_spin_contour(vb[perm[i]]);
+    REQUIRE(!ca.empty());
+    CHECK(shapecorr::contour_l1_distance(ca, cb) < 1e-6);
+  }
+}
+
+TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  // A long strip; P near the left end; everything beyond x = 5 removed in the cut copy.
+  const int nx = 120, ny = 10;
+  const double W = 12.0, H = 1.0;
+  TestType whole, cut;
+  make_strip(whole, nx, ny, W, H, 0.0);
+  {
+    std::vector<std::array<double, 3>> P;
+    std::vector<std::array<std::size_t, 3>> T;
+    TestType g;
+    make_strip(g, nx, ny, W, H, 0.0);
+    for(int j = 0; j <= ny; ++j)
+      for(int i = 0; i <= 50; ++i) P.push_back({W * i / nx, H * j / ny, 0.0});
+    auto id = [](int i, int j) { return static_cast<std::size_t>(j * 51 + i); };
+    for(int j = 0; j < ny; ++j)
+      for(int i = 0; i < 50; ++i) { // the same diagonals as make_grid
+        if((i + j) % 2 == 0) {
+          T.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+          T.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        } else {
+          T.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+          T.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+      }
+    shapecorr::internal::soup_to_mesh(P, T, cut);
+  }
+  const double D = std::sqrt(W * W + H * H);
+  // L = 0.1 D = 1.2, r = 0.1 D: P at x = 1 needs the strip up to x = 1 + 1.2 + 1.2 (+ an edge) < 5
+  const auto np = SP::support_fraction(0.1).agd_radius_fraction(0.1).geodesic_diameter(D);
+  const shapecorr::Geodesic_spin_descriptors<TestType> gw(whole, np), gc(cut, np);
+  const auto vw = vertex_list(whole), vc = vertex_list(cut);
+  for(int j : {0, 3, 5, 9})
+    for(int i : {6, 10, 14}) {
+      const auto a = gw.geodesic_spin_contour(vw[static_cast<std::size_t>(j * (nx + 1) + i)]);
+      const auto b = gc.geodesic_spin_contour(vc[static_cast<std::size_t>(j * 51 + i)]);
+      REQUIRE(a.size() > 10);
+      CHECK(shapecorr::contour_l1_distance(a, b) < 1e-9);
+    }
+  // the global agd, by contrast, sees the cut
+  const auto npg = SP::support_fraction(0.1).agd_radius_fraction(0.0).number_of_sources(0).geodesic_diameter(D);
+  const shapecorr::Geodesic_spin_descriptors<TestType> hw(whole, npg), hc(cut, npg);
+  CHECK(shapecorr::contour_l1_distance(hw.geodesic_spin_contour(vw[6]), hc.geodesic_spin_contour(vc[6])) > 0.01);
+}
+
+TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geodesic spin image", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_icosphere(m, 3);
+  test::transform_points(m, [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(1.3 * p.x() + 0.2 * p.y() * p.y(), 0.9 * p.y(), 0.7 * p.z() + 0.15 * std::sin(3 * p.x()));
+  });
+  const std::size_t R = 32, C = 32;
+  const auto np = SP::support_fraction(0.5).agd_radius_fraction(0.0).number_of_sources(0).image_rows(R).image_columns(C);
+  const shapecorr::Geodesic_spin_descriptors<TestType> gs(m, np);
+  const double L = gs.support_length(), S = gs.alpha_scale();
+  const auto vs = vertex_list(m);
+  auto vim = CGAL::get_initialized_vertex_index_map(m);
+  std::vector<std::vector<std::array<double, 2>>> image_contours;
+  std::vector<shapecorr::Spin_contour> fast;
+  for(std::size_t p : {0u, 100u, 333u}) {
+    // the image: dense samples of every triangle with gd, agd interpolated linearly; occupied cells
+    typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball ball;
+    gs.support_ball(gs.index(vs[p]), ball);
+    std::vector<double> gd(vs.size(), std::numeric_limits<double>::infinity());
+    for(const auto& b : ball) gd[b.first] = b.second;
+    std::vector<char> occ(R * C, 0);
+    const int N = 60;
+    for(auto f : faces(m)) {
+      std::array<std::size_t, 3> c;
+      int k = 0;
+      for(auto v : vertices_around_face(halfedge(f, m), m)) c[static_cast<std::size_t>(k++)] = get(vim, v);
+      for(int i = 0; i <= N; ++i)
+        for(int j = 0; i + j <= N; ++j) {
+          const double u = double(i) / N, w = double(j) / N, z = 1 - u - w;
+          const double g = u * gd[c[0]] + w * gd[c[1]] + z * gd[c[2]];
+          const double a = u * gs.average_geodesic_distances()[c[0]] + w * gs.average_geodesic_distances()[c[1]] + z * gs.average_geodesic_distances()[c[2]];
+          if(!(g < L)) continue;
+          const std::size_t row = std::min(R - 1, static_cast<std::size_t>(g / L * R));
+          const std::size_t col = std::min(C - 1, static_cast<std::size_t>(a / S * C));
+          occ[row * C + col] = 1;
+        }
+    }
+    // its contour: occupied cells with an empty 4-neighbour (outside counts as empty)
+    std::vector<std::array<double, 2>> pts;
+    for(std::size_t r = 0; r < R; ++r)
+      for(std::size_t c = 0; c < C; ++c) {
+        if(!occ[r * C + c]) continue;
+        const bool edge = r == 0 || r + 1 == R || c == 0 || c + 1 == C || !occ[(r - 1) * C + c] || !occ[(r + 1) * C + c] ||
+                          !occ[r * C + c - 1] || !occ[r * C + c + 1];
+        if(edge) pts.push_back({(c + 0.5) / C, (r + 0.5) / R});
+      }
+    REQUIRE(pts.size() > 10);
+    image_contours.push_back(pts);
+    fast.push_back(gs.geodesic_spin_contour(vs[p]));
+  }
+  for(std::size_t i = 0; i < fast.size(); ++i) {
+    const double d = shapecorr::point_set_l1_distance(fast[i].points(), image_contours[i]);
+    INFO("point " << i << ": " << d);
+    // within half a cell: the image's contour cells are the cells the fast contour's points fall in
+    // or next to (measured: 0.29-0.32 of a cell)
+    CHECK(d < 0.5 / C);
+  }
+}
+
+TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  TestType flat, rolled;
+  make_strip(flat, 40, 10, 4.0, 1.0, 0.0);
+  make_strip(rolled, 40, 10, 4.0, 1.0, 1.0);
+  const auto np = SP::support_fraction(0.3).geodesic_diameter(std::sqrt(17.0));
+  const shapecorr::Geodesic_spin_descriptors<TestType> a(flat, np), b(rolled, np);
+  const auto va = vertex_list(flat), vb = vertex_list(rolled);
+  const auto ia = a.geodesic_spin_image(va[100]), ib = b.geodesic_spin_image(vb[100]);
+  CHECK(ia.rows() == 64);
+  CHECK(ia.cols() == 64);
+  // the image's mass is the area of the disc gd <= L (up to splatting at the border)
+  double mass = 0;
+  for(float x : ia.values()) mass += x;
+  CHECK(mass > 0);
+  CHECK(shapecorr::spin_image_correlation(ia, ib).first > 0.95);
+  // batch = one by one; the property-map function
+  const std::vector<std::size_t> ids = {0, 50, 100, 150};
+  const auto batch = a.geodesic_spin_contours(ids);
+  for(std::size_t k = 0; k < ids.size(); ++k) CHECK(shapecorr::contour_l1_distance(batch[k], a.geodesic_spin_contour(va[ids[k]])) == 0.0);
+  std::map<typename boost::graph_traits<TestType>::vertex_descriptor, shapecorr::Spin_contour> store;
+  std::vector<typename boost::graph_traits<TestType>::vertex_descriptor> some = {va[0], va[50]};
+  shapecorr::compute_geodesic_spin_contours(flat, some, boost::make_assoc_property_map(store), np);
+  CHECK(shapecorr::contour_l1_distance(store[va[50]], batch[1]) == 0.0);
+  // rows: beta = gd / L in [0, 1], row 0 nearest to the point
+  CHECK(batch[0].beta(0) == Approx(0.5 / 64));
+  CHECK(batch[0].row_spacing() == Approx(1.0 / 64));
+  // a rigid Spin Contour cannot be compared with a geodesic one
+  shapecorr::Spin_contour rigid(64, 1.0);
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(rigid, batch[0]), shapecorr::Invalid_input);
+}
+
+TEST_CASE("geodesic spin descriptors: errors", "[descriptors][gsc]") {
+  test::Surface_mesh m;
+  shapecorr::make_grid(m, 4, 4);
+  using G = shapecorr::Geodesic_spin_descriptors<test::Surface_mesh>;
+  CHECK_THROWS_AS(G(m, SP::support_fraction(0.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::support_fraction(-1.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::agd_radius_fraction(-0.1)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::image_rows(1)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::agd_scale(0.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::geodesic_diameter(std::nan(""))), shapecorr::Invalid_input);
+  test::Surface_mesh empty;
+  CHECK_THROWS_AS(G(empty), shapecorr::Invalid_input);
+  const G g(m);
+  G::Ball bad = {{0, 0.0}, {999, 0.1}};
+  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(g.geodesic_spin_contours({0, 999}), shapecorr::Invalid_input);
+}
