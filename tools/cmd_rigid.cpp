@@ -23,6 +23,7 @@ bool is_rigid(const std::string& t) {
   return t == "spin-image" || t == "face-spin-image" || t == "spin-contour" || t == "improved-spin-image";
 }
 bool is_spectral(const std::string& t) { return t == "hks" || t == "wks" || t == "sihks"; }
+bool is_geodesic(const std::string& t) { return t == "gsc" || t == "geodesic-spin-image"; }
 
 Spin_axis parse_axis(const std::string& s, const std::string& type) {
   if(type == "improved-spin-image") {
@@ -47,6 +48,29 @@ std::unique_ptr<shapecorr::Spin_descriptors<Mesh>> make_spin(const Mesh& m, cons
   return std::unique_ptr<shapecorr::Spin_descriptors<Mesh>>(new shapecorr::Spin_descriptors<Mesh>(
       m, SP::support_length(support).image_rows(rows).image_columns(cols).spin_axis(parse_axis(a.get("axis"), type))
              .central_radius(central).lrf_radius(lrf)));
+}
+
+// The lengths that normalize the Geodesic Spin Contour: when matching, the target's, so that a
+// part of a shape is described with the whole shape's lengths.
+struct Geodesic_norm {
+  bool set = false;
+  double diameter = 0, offset = 0, scale = 0;
+};
+
+// The Geodesic Spin Contour settings of the command line: support and agd radius as fractions of
+// the geodesic diameter; `norm` (when set) imposes D and the agd normalization, else it receives
+// this mesh's.
+std::unique_ptr<shapecorr::Geodesic_spin_descriptors<Mesh>> make_geodesic(const Mesh& m, const Args& a, Geodesic_norm* norm,
+                                                                          const std::function<void(std::size_t, std::size_t)>& progress) {
+  typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
+  const double support = to_double(a.get("support", "0.2"), "--support"), radius = to_double(a.get("agd-radius", "0.15"), "--agd-radius");
+  const std::size_t rows = to_count(a.get("rows", "64"), "--rows"), cols = to_count(a.get("cols", "64"), "--cols");
+  const auto np = SP::support_fraction(support).agd_radius_fraction(radius).image_rows(rows).image_columns(cols).progress_callback(progress);
+  std::unique_ptr<G> g;
+  if(norm && norm->set) g.reset(new G(m, np.geodesic_diameter(norm->diameter).agd_offset(norm->offset).agd_scale(norm->scale)));
+  else g.reset(new G(m, np));
+  if(norm && !norm->set) *norm = {true, g->geodesic_diameter(), g->alpha_offset(), g->alpha_scale()};
+  return g;
 }
 
 std::function<void(std::size_t, std::size_t)> reporter(const Args& a, const std::string& what) {
@@ -76,7 +100,7 @@ struct Descriptor_set {
 };
 
 Descriptor_set compute_set(const Mesh& m, const std::vector<std::size_t>& ids, const std::string& type, const Args& a, const Mesh& reference,
-                           const std::string& label) {
+                           const std::string& label, Geodesic_norm* norm = nullptr) {
   Descriptor_set s;
   if(is_spectral(type)) {
     const std::size_t k = std::min<std::size_t>(to_count(a.get("eigenpairs", "300"), "--eigenpairs"), m.number_of_vertices());
@@ -88,6 +112,12 @@ Descriptor_set compute_set(const Mesh& m, const std::vector<std::size_t>& ids, c
     else D = shapecorr::scale_invariant_heat_kernel_signature_matrix(basis);
     s.rows.resize(static_cast<Eigen::Index>(ids.size()), D.cols());
     for(std::size_t i = 0; i < ids.size(); ++i) s.rows.row(static_cast<Eigen::Index>(i)) = D.row(static_cast<Eigen::Index>(ids[i]));
+    return s;
+  }
+  if(is_geodesic(type)) {
+    const auto gs = make_geodesic(m, a, norm, reporter(a, label + " (agd)"));
+    if(type == "gsc") s.contours = gs->geodesic_spin_contours(ids, reporter(a, label));
+    else s.images = gs->geodesic_spin_images(ids, reporter(a, label));
     return s;
   }
   const auto sd = make_spin(m, a, type, reference);
@@ -112,12 +142,46 @@ std::vector<shapecorr::Descriptor_match> match_sets(const Descriptor_set& s, con
   return shapecorr::match_descriptors(a, b, [](const Eigen::VectorXd& x, const Eigen::VectorXd& y) { return (x - y).norm(); });
 }
 
+// The descriptor distance from element k of `from` to every element of `to` (spectral: Euclidean;
+// images: 1 - correlation; contours: L1).
+std::vector<double> distances_to(const Descriptor_set& from, const Descriptor_set& to, std::size_t k) {
+  std::vector<double> d(to.size());
+  shapecorr::internal::parallel_for(to.size(), 0, [&](std::size_t i, unsigned) {
+    if(!from.contours.empty()) d[i] = shapecorr::contour_l1_distance(from.contours[k], to.contours[i]);
+    else if(!from.images.empty()) d[i] = shapecorr::Spin_image_distance()(from.images[k], to.images[i]);
+    else d[i] = (from.rows.row(static_cast<Eigen::Index>(k)) - to.rows.row(static_cast<Eigen::Index>(i))).norm();
+  });
+  return d;
+}
+
 } // namespace
 
 int cmd_rigid_descriptors(const Args& a) {
   const Mesh m = read_mesh(a);
   const std::string type = a.require("type"), output = a.require("output");
   const auto t0 = std::chrono::steady_clock::now();
+  if(a.has("plot") && is_geodesic(type)) {
+    const std::size_t v = parse_ids(a.get("plot"), m.number_of_vertices())[0];
+    if(extension(output) != "png") throw Usage_error("--plot writes a .png picture");
+    const auto gs = make_geodesic(m, a, nullptr, {});
+    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
+    const shapecorr::Spin_image img = gs->geodesic_spin_image(vd);
+    const shapecorr::Spin_contour c = gs->geodesic_spin_contour(vd);
+    shapecorr::write_spin_descriptor_plot(output, img, c);
+    if(!a.has("quiet"))
+      std::cerr << "descriptors: vertex " << v << ", geodesic spin image " << img.rows() << "x" << img.cols() << " and its Geodesic Spin Contour ("
+                << c.size() << " points; gd grows downwards, agd to the right) -> " << output << "\n";
+    return 0;
+  }
+  if(a.has("distance-to")) { // the descriptor distance of every vertex to vertex V
+    const std::size_t v = parse_ids(a.get("distance-to"), m.number_of_vertices())[0];
+    const Descriptor_set s = compute_set(m, all_ids(m.number_of_vertices()), type, a, m, "descriptors");
+    write_values(output, m, distances_to(s, s, v), {v});
+    if(!a.has("quiet"))
+      std::cerr << "descriptors: " << type << " distance of every vertex to vertex " << v << ", "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s -> " << output << "\n";
+    return 0;
+  }
   if(a.has("plot")) {
     const std::size_t v = parse_ids(a.get("plot"), m.number_of_vertices())[0];
     if(extension(output) != "png") throw Usage_error("--plot writes a .png picture");
@@ -138,7 +202,7 @@ int cmd_rigid_descriptors(const Args& a) {
   std::ofstream out(output);
   if(!out) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, output + ": cannot open for writing");
   out.precision(7);
-  if(type == "spin-contour") {
+  if(type == "spin-contour" || type == "gsc") {
     out << "vertex,alpha,beta\n";
     for(std::size_t i = 0; i < ids.size(); ++i)
       for(const auto& p : s.contours[i].points()) out << ids[i] << "," << p[0] << "," << p[1] << "\n";
@@ -159,8 +223,8 @@ int cmd_match(const Args& a) {
   if(a.positional.size() < 2) throw Usage_error("match needs SOURCE and TARGET meshes");
   const Mesh source = read_mesh(a, 0), target = read_mesh(a, 1);
   const std::string type = a.require("descriptor"), output = a.require("output");
-  if(!is_rigid(type) && !is_spectral(type))
-    throw Usage_error("--descriptor must be spin-image, face-spin-image, spin-contour, improved-spin-image, hks, wks or sihks");
+  if(!is_rigid(type) && !is_spectral(type) && !is_geodesic(type))
+    throw Usage_error("--descriptor must be spin-image, face-spin-image, spin-contour, improved-spin-image, gsc, geodesic-spin-image, hks, wks or sihks");
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::size_t> ids;
   if(a.has("source-points")) {
@@ -180,8 +244,9 @@ int cmd_match(const Args& a) {
     shapecorr::furthest_point_sampling(source, n, std::back_inserter(samples), SP::random_seed(static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed"))));
     for(auto v : samples) ids.push_back(v.idx());
   }
-  const Descriptor_set s = compute_set(source, ids, type, a, target, "source descriptors");
-  const Descriptor_set t = compute_set(target, all_ids(target.number_of_vertices()), type, a, target, "target descriptors");
+  Geodesic_norm norm; // the target's, imposed on the source
+  const Descriptor_set t = compute_set(target, all_ids(target.number_of_vertices()), type, a, target, "target descriptors", &norm);
+  const Descriptor_set s = compute_set(source, ids, type, a, target, "source descriptors", &norm);
   const auto t1 = std::chrono::steady_clock::now();
   const std::vector<shapecorr::Descriptor_match> matches = match_sets(s, t);
   std::ofstream out(output);
@@ -193,6 +258,25 @@ int cmd_match(const Args& a) {
     pairs.emplace_back(ids[m.source], m.target);
   }
   if(a.has("lines")) shapecorr::write_correspondences(a.get("lines"), source, target, pairs);
+  if(a.has("distance-view")) { // the descriptor distance to one source vertex on both shapes
+    const std::size_t v = parse_ids(a.get("distance-view"), source.number_of_vertices())[0];
+    const std::string prefix = a.get("distance-view-prefix", output);
+    const Descriptor_set all_source = compute_set(source, all_ids(source.number_of_vertices()), type, a, target, "distance view (source)", &norm);
+    Descriptor_set one;
+    one.contours.assign(all_source.contours.begin() + static_cast<std::ptrdiff_t>(all_source.contours.empty() ? 0 : v),
+                        all_source.contours.empty() ? all_source.contours.begin() : all_source.contours.begin() + static_cast<std::ptrdiff_t>(v) + 1);
+    one.images.assign(all_source.images.begin() + static_cast<std::ptrdiff_t>(all_source.images.empty() ? 0 : v),
+                      all_source.images.empty() ? all_source.images.begin() : all_source.images.begin() + static_cast<std::ptrdiff_t>(v) + 1);
+    if(all_source.rows.rows() > 0) one.rows = all_source.rows.row(static_cast<Eigen::Index>(v));
+    write_values(prefix + "_source.ply", source, distances_to(one, all_source, 0), {v});
+    std::vector<std::size_t> best;
+    const std::vector<double> dt = distances_to(one, t, 0);
+    best.push_back(static_cast<std::size_t>(std::min_element(dt.begin(), dt.end()) - dt.begin()));
+    write_values(prefix + "_target.ply", target, dt, best);
+    if(!a.has("quiet"))
+      std::cerr << "match: distance to source vertex " << v << " -> " << prefix << "_source.ply, " << prefix << "_target.ply (marked: the nearest target vertex "
+                << best[0] << ")\n";
+  }
   if(!a.has("quiet"))
     std::cerr << "match: " << type << ", " << ids.size() << " source points against " << target.number_of_vertices() << " target vertices (descriptors "
               << std::chrono::duration<double>(t1 - t0).count() << " s, matching "

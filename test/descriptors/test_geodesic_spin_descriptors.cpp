@@ -138,9 +138,11 @@ TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted"
     shapecorr::internal::soup_to_mesh(P, T, cut);
   }
   const double D = std::sqrt(W * W + H * H);
-  // L = 0.1 D = 1.2, r = 0.1 D: P at x = 1 needs the strip up to x = 1 + 1.2 + 1.2 (+ an edge) < 5
-  const auto np = SP::support_fraction(0.1).agd_radius_fraction(0.1).geodesic_diameter(D);
-  const shapecorr::Geodesic_spin_descriptors<TestType> gw(whole, np), gc(cut, np);
+  // L = 0.1 D = 1.2, r = 0.1 D: P at x = 1 needs the strip up to x = 1 + 1.2 + 1.2 (+ an edge) < 5.
+  // The part gets the whole shape's lengths: D and the agd normalization.
+  const shapecorr::Geodesic_spin_descriptors<TestType> gw(whole, SP::support_fraction(0.1).agd_radius_fraction(0.1).geodesic_diameter(D));
+  const auto np = SP::support_fraction(0.1).agd_radius_fraction(0.1).geodesic_diameter(D).agd_offset(gw.alpha_offset()).agd_scale(gw.alpha_scale());
+  const shapecorr::Geodesic_spin_descriptors<TestType> gc(cut, np);
   const auto vw = vertex_list(whole), vc = vertex_list(cut);
   for(int j : {0, 3, 5, 9})
     for(int i : {6, 10, 14}) {
@@ -150,7 +152,7 @@ TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted"
       CHECK(shapecorr::contour_l1_distance(a, b) < 1e-9);
     }
   // the global agd, by contrast, sees the cut
-  const auto npg = SP::support_fraction(0.1).agd_radius_fraction(0.0).number_of_sources(0).geodesic_diameter(D);
+  const auto npg = SP::support_fraction(0.1).agd_radius_fraction(0.0).number_of_sources(0).geodesic_diameter(D).agd_offset(0.0).agd_scale(D);
   const shapecorr::Geodesic_spin_descriptors<TestType> hw(whole, npg), hc(cut, npg);
   CHECK(shapecorr::contour_l1_distance(hw.geodesic_spin_contour(vw[6]), hc.geodesic_spin_contour(vc[6])) > 0.01);
 }
@@ -164,7 +166,7 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
   const std::size_t R = 32, C = 32;
   const auto np = SP::support_fraction(0.5).agd_radius_fraction(0.0).number_of_sources(0).image_rows(R).image_columns(C);
   const shapecorr::Geodesic_spin_descriptors<TestType> gs(m, np);
-  const double L = gs.support_length(), S = gs.alpha_scale();
+  const double L = gs.support_length(), S = gs.alpha_scale(), O = gs.alpha_offset();
   const auto vs = vertex_list(m);
   auto vim = CGAL::get_initialized_vertex_index_map(m);
   std::vector<std::vector<std::array<double, 2>>> image_contours;
@@ -188,7 +190,7 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
           const double a = u * gs.average_geodesic_distances()[c[0]] + w * gs.average_geodesic_distances()[c[1]] + z * gs.average_geodesic_distances()[c[2]];
           if(!(g < L)) continue;
           const std::size_t row = std::min(R - 1, static_cast<std::size_t>(g / L * R));
-          const std::size_t col = std::min(C - 1, static_cast<std::size_t>(a / S * C));
+          const std::size_t col = std::min(C - 1, static_cast<std::size_t>(std::max(0.0, (a - O) / S * C)));
           occ[row * C + col] = 1;
         }
     }
@@ -254,6 +256,7 @@ TEST_CASE("geodesic spin descriptors: errors", "[descriptors][gsc]") {
   CHECK_THROWS_AS(G(m, SP::agd_radius_fraction(-0.1)), shapecorr::Invalid_input);
   CHECK_THROWS_AS(G(m, SP::image_rows(1)), shapecorr::Invalid_input);
   CHECK_THROWS_AS(G(m, SP::agd_scale(0.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::agd_offset(std::nan(""))), shapecorr::Invalid_input);
   CHECK_THROWS_AS(G(m, SP::geodesic_diameter(std::nan(""))), shapecorr::Invalid_input);
   test::Surface_mesh empty;
   CHECK_THROWS_AS(G(empty), shapecorr::Invalid_input);

@@ -64,10 +64,15 @@ struct Geodesic_section {
 /// The contour is built as the Spin Contour (fast construction): gd and agd are taken linear in
 /// each triangle; for each of `rows` isolines gd = beta_r = (r + 1/2) L / rows the alpha range of
 /// each connected piece of the isoline, their union, the end points, and closing samples on
-/// `columns` alpha samples. Coordinates are normalized to [0, 1] before comparing: **beta by L,
-/// alpha by `alpha_scale()`**, the geodesic diameter D by default (ALGORITHMS.md's choice; agd
-/// never exceeds D). Compare contours with `contour_l1_distance` (the same function as the rigid
-/// Spin Contour), images with `spin_image_correlation`.
+/// `columns` alpha samples. Coordinates are normalized to [0, 1] before comparing ("we normalize
+/// the range of spin coordinates to [0, 1]", thesis section 4.2): **beta = gd / L, alpha =
+/// (agd - offset) / scale with the range [min agd, max agd] of the mesh** by default. ALGORITHMS.md
+/// chose alpha = agd / D; with the local agd (values below r = 0.15 D) that squeezes every contour
+/// into a band of about 1/60 of the alpha axis (see doc/geodesic_spin_contour.md), so the range is
+/// the default and `agd_offset(0).agd_scale(D)` gives the other choice. To compare a part with a
+/// whole shape, give both the whole shape's D, offset and scale. Compare contours with
+/// `contour_l1_distance` (the same function as the rigid Spin Contour), images with
+/// `spin_image_correlation`.
 ///
 /// Geodesic distances from P come from radius-limited fast marching (radius L plus the longest
 /// edge, so that every triangle an isoline crosses has all its distances); the agd of all
@@ -83,7 +88,7 @@ struct Geodesic_section {
 /// | `agd_radius_fraction` | r / D for the local agd; 0 selects the global agd | `double` | 0.15 |
 /// | `number_of_sources` | global agd: furthest-point sources averaged | `std::size_t` | 100 |
 /// | `geodesic_diameter` | D in mesh units (e.g. the whole shape's D for a part of it) | `double` | computed (farthest-point sweeps) |
-/// | `agd_scale` | the alpha normalization, mesh units | `double` | D |
+/// | `agd_offset`, `agd_scale` | alpha = (agd - offset) / scale, mesh units | `double` | min agd, max agd - min agd (D when the agd is constant) |
 /// | `image_rows`, `image_columns` | beta samples (rows), alpha samples (columns) | `std::size_t` | 64, 64 |
 /// | `number_of_threads` | threads of the batch function and of the agd | `unsigned` | all |
 /// | `progress_callback` | `f(done, total)` during the agd | `std::function<void(size_t, size_t)>` | none |
@@ -122,9 +127,6 @@ public:
       throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: the geodesic diameter is zero or not finite");
     m_support = support_fraction * m_diameter;
     m_radius = radius_fraction * m_diameter;
-    m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale), m_diameter);
-    if(!(m_alpha_scale > 0) || !std::isfinite(m_alpha_scale))
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_scale must be positive");
     // the average geodesic distance of every vertex
     if(m_radius > 0) {
       m_agd = internal::local_average_geodesic_distances(m_engine, m_radius, internal::progress_of(np));
@@ -132,6 +134,14 @@ public:
       m_agd.assign(n, 0.0);
       compute_average_geodesic_distance(tm, Agd_writer{&m_agd, &m_engine}, np);
     }
+    // alpha = (agd - offset) / scale: by default the range of the agd over the mesh maps to [0, 1]
+    const auto range = std::minmax_element(m_agd.begin(), m_agd.end());
+    m_alpha_offset = choose_parameter(get_parameter(np, internal_np::agd_offset), *range.first);
+    const double spread = *range.second - *range.first;
+    // a (numerically) constant agd, e.g. a local radius smaller than every edge: scale by D
+    m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale), spread > 1e-9 * m_diameter ? spread : m_diameter);
+    if(!(m_alpha_scale > 0) || !std::isfinite(m_alpha_scale) || !std::isfinite(m_alpha_offset))
+      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_scale must be positive and agd_offset finite");
     // topology: faces with their neighbours, faces around each vertex, the longest edge
     m_links = internal::build_face_links(a);
     m_vertex_faces_begin.assign(n + 1, 0);
@@ -160,8 +170,9 @@ public:
   double support_length() const { return m_support; }
   /// Radius r of the local agd (mesh units); 0 for the global agd.
   double agd_radius() const { return m_radius; }
-  /// The alpha normalization (mesh units).
+  /// The alpha normalization alpha = (agd - alpha_offset()) / alpha_scale() (mesh units).
   double alpha_scale() const { return m_alpha_scale; }
+  double alpha_offset() const { return m_alpha_offset; }
   std::size_t rows() const { return m_rows; }
   std::size_t columns() const { return m_cols; }
   std::size_t number_of_vertices() const { return m_engine.number_of_vertices(); }
@@ -259,7 +270,7 @@ private:
     for(const auto& p : ball) {
       if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
       const double t = p.second * inv_h - 0.5;
-      st.cws.vx[p.first] = {m_agd[p.first], t};
+      st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
       st.cws.set_rows(p.first, t, R);
     }
     if(st.epoch == 0xFFFFFFFFu) {
@@ -271,7 +282,13 @@ private:
     sec.merge_eps = 1e-12 * m_alpha_scale;
     Spin_contour c(R, m_support, 0.0, 1.0);
     internal::build_level_set_contour(m_links, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
-      // the faces around the vertices inside the disc: every face an isoline crosses
+      // every face an isoline crosses has a corner inside the disc: when the disc holds a large
+      // part of the mesh, scanning all faces (cheap: the others cross no row) is faster than
+      // collecting the faces around its vertices
+      if(3 * ball.size() > n) {
+        for(std::size_t f = 0; f < m_links.size(); ++f) visit(f);
+        return;
+      }
       for(const auto& p : ball) {
         if(!(p.second < m_support)) continue;
         for(std::uint32_t k = m_vertex_faces_begin[p.first]; k < m_vertex_faces_begin[p.first + 1]; ++k) {
@@ -291,7 +308,7 @@ private:
     for(const auto& p : ball) {
       if(p.first >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin image: a vertex index of the ball is out of range");
       if(!(p.second <= m_support)) continue;
-      const double u = m_agd[p.first] / m_alpha_scale * static_cast<double>(m_cols) - 0.5;
+      const double u = (m_agd[p.first] - m_alpha_offset) / m_alpha_scale * static_cast<double>(m_cols) - 0.5;
       const double v = p.second / m_support * static_cast<double>(m_rows) - 0.5;
       const double fu = std::floor(u), fv = std::floor(v);
       const double du = u - fu, dv = v - fv;
@@ -329,7 +346,7 @@ private:
   Fast_marching_geodesics<TriangleMesh> m_engine;
   std::uint64_t m_id;
   std::size_t m_rows = 64, m_cols = 64;
-  double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_ball_radius = 0;
+  double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0;
   std::vector<double> m_agd, m_vertex_area;
   std::vector<internal::Face_link> m_links;
   std::vector<std::uint32_t> m_vertex_faces_begin, m_vertex_faces;

@@ -45,3 +45,4 @@ SHAPECORR_add_named_parameter(support_fraction_t, support_fraction, support_frac
 SHAPECORR_add_named_parameter(agd_radius_fraction_t, agd_radius_fraction, agd_radius_fraction)
 SHAPECORR_add_named_parameter(geodesic_diameter_t, geodesic_diameter, geodesic_diameter)
 SHAPECORR_add_named_parameter(agd_scale_t, agd_scale, agd_scale)
+SHAPECORR_add_named_parameter(agd_offset_t, agd_offset, agd_offset)

@@ -1,0 +1,120 @@
+// Geodesic Spin Contour benchmarks on the TOSCA wolf (../shared/data/tosca5k/meshes/wolf0.off, 4344
+// vertices; SHAPECORR_BENCH_MESH overrides), L = 0.4 D, r = 0.15 D (the thesis's wolf parameters),
+// each against a reference measured in the same run:
+//  - one GSC once the distances exist (the geodesic ball of the point precomputed) vs the
+//    geodesic spin image from the same ball;
+//  - the GSC of every vertex including every geodesic computation (diameter, local agd, one
+//    radius-limited march per vertex) vs all-pairs fast-marching distances (what the thesis computed
+//    first, in about 15 minutes, before any descriptor).
+// Run through benchmark/run, which writes JSON and the ratios.
+#include <shapecorr/descriptors.h>
+#include <shapecorr/geodesics.h>
+#include <shapecorr/io.h>
+#include <shapecorr/mesh/primitives.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <numeric>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace SP = shapecorr::parameters;
+typedef shapecorr::Geodesic_spin_descriptors<Mesh> GSD;
+
+struct Fixture {
+  Mesh mesh;
+  std::string name;
+  std::unique_ptr<GSD> gsd;
+  std::vector<GSD::Ball> balls; // of 64 vertices spread over the mesh
+  Fixture() {
+    const char* env = std::getenv("SHAPECORR_BENCH_MESH");
+    name = env ? env : std::string(SHAPECORR_BENCH_DATA_DIR) + "/tosca5k/meshes/wolf0.off";
+    try {
+      shapecorr::read_triangle_mesh(name, mesh);
+    } catch(const std::exception& e) {
+      std::cerr << "benchmark mesh unavailable (" << e.what() << "): using a generated sphere\n";
+      name = "icosphere(5)";
+      shapecorr::make_icosphere(mesh, 5);
+    }
+    gsd.reset(new GSD(mesh, SP::support_fraction(0.4).agd_radius_fraction(0.15)));
+    const std::size_t n = gsd->number_of_vertices();
+    for(std::size_t k = 0; k < 64; ++k) {
+      balls.emplace_back();
+      gsd->support_ball(k * n / 64, balls.back());
+    }
+  }
+};
+Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+void BM_GSC_FromDistances(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::size_t i = 0, points = 0, count = 0;
+  for(auto _ : state) {
+    const shapecorr::Spin_contour c = fx.gsd->geodesic_spin_contour(fx.balls[i++ % 64]);
+    points += c.size();
+    ++count;
+    benchmark::DoNotOptimize(c.size());
+  }
+  state.counters["vertices"] = static_cast<double>(fx.gsd->number_of_vertices());
+  state.counters["mean_points"] = static_cast<double>(points) / static_cast<double>(count);
+  state.counters["mean_ball"] = [&] {
+    double s = 0;
+    for(const auto& b : fx.balls) s += static_cast<double>(b.size());
+    return s / 64.0;
+  }();
+}
+BENCHMARK(BM_GSC_FromDistances)->Unit(benchmark::kMicrosecond);
+
+void BM_Reference_GeodesicSpinImage_FromDistances(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::size_t i = 0;
+  for(auto _ : state) benchmark::DoNotOptimize(fx.gsd->geodesic_spin_image(fx.balls[i++ % 64]).values().data());
+}
+BENCHMARK(BM_Reference_GeodesicSpinImage_FromDistances)->Unit(benchmark::kMicrosecond);
+
+// One radius-limited march to L + the longest edge (the distances one GSC needs).
+void BM_GSC_SupportBall(benchmark::State& state) {
+  Fixture& fx = fixture();
+  GSD::Ball ball;
+  std::size_t i = 0;
+  const std::size_t n = fx.gsd->number_of_vertices();
+  for(auto _ : state) {
+    fx.gsd->support_ball((i++ * 67) % n, ball);
+    benchmark::DoNotOptimize(ball.data());
+  }
+}
+BENCHMARK(BM_GSC_SupportBall)->Unit(benchmark::kMicrosecond);
+
+// Everything for every vertex: the diameter, the local agd, one march and one contour per vertex.
+void BM_GSC_AllVertices(benchmark::State& state) {
+  Fixture& fx = fixture();
+  for(auto _ : state) {
+    const GSD g(fx.mesh, SP::support_fraction(0.4).agd_radius_fraction(0.15));
+    std::vector<std::size_t> all(g.number_of_vertices());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    benchmark::DoNotOptimize(g.geodesic_spin_contours(all).data());
+  }
+  state.counters["vertices"] = static_cast<double>(num_vertices(fx.mesh));
+}
+BENCHMARK(BM_GSC_AllVertices)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+void BM_Reference_AllPairsFastMarching(benchmark::State& state) {
+  Fixture& fx = fixture();
+  for(auto _ : state)
+    benchmark::DoNotOptimize(shapecorr::compute_all_pairs_geodesic_distances(fx.mesh, SP::geodesic_method(shapecorr::Geodesic_method::FAST_MARCHING)).diameter());
+}
+BENCHMARK(BM_Reference_AllPairsFastMarching)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();
