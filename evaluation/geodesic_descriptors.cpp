@@ -1,0 +1,367 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The thesis's chapter 4 evaluation (ALGORITHMS.md): hit rate and average geodesic error against
+// 100 k / N for the Geodesic Spin Contour, the geodesic spin image, HKS, WKS, SI-HKS and the spin
+// image, on TOSCA (tosca5k) same-class pairs, whole and with partial / resampled sources made here
+// (a cut extremity, random deletion of 20/40/60 vertices, one Loop subdivision), ground truth from
+// the .vts files carried through the kept vertex ids. Writes CSV curves, PNG plots and a JSON
+// summary (hit rate at k = 1 and at 1%, mean geodesic error at k = 1, normalized by sqrt(area)).
+//
+// usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,c:d] [--variants
+//        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,si]
+//        [--points 50] [--seed 1] [--threads T]
+#include "plot.h"
+
+#include <shapecorr/descriptors.h>
+#include <shapecorr/evaluation/descriptor_ranking.h>
+#include <shapecorr/geodesics.h>
+#include <shapecorr/io.h>
+#include <shapecorr/mesh/primitives.h>
+#include <shapecorr/spectral.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+namespace SP = shapecorr::parameters;
+const std::size_t none = std::numeric_limits<std::size_t>::max();
+
+// A source shape with, per vertex, the id of the vertex of the original shape it comes from.
+struct Shape {
+  Mesh mesh;
+  std::vector<std::size_t> original;
+};
+
+Shape whole(const Mesh& m) {
+  Shape s{m, {}};
+  for(std::size_t i = 0; i < m.number_of_vertices(); ++i) s.original.push_back(i);
+  return s;
+}
+
+// The faces of m whose corners all satisfy keep(v), compacted (isolated vertices dropped).
+template <typename Keep>
+Shape keep_faces(const Mesh& m, Keep&& keep) {
+  Shape s;
+  std::vector<std::size_t> id(m.number_of_vertices(), none);
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  for(auto f : m.faces()) {
+    std::array<std::size_t, 3> t;
+    int k = 0;
+    bool ok = true;
+    for(auto v : vertices_around_face(m.halfedge(f), m)) {
+      ok = ok && keep(v.idx());
+      t[static_cast<std::size_t>(k++)] = v.idx();
+    }
+    if(!ok) continue;
+    for(auto& v : t) {
+      if(id[v] == none) {
+        id[v] = P.size();
+        const auto& p = m.point(Vertex(static_cast<Mesh::size_type>(v)));
+        P.push_back({p.x(), p.y(), p.z()});
+        s.original.push_back(v);
+      }
+      v = id[v];
+    }
+    T.push_back(t);
+  }
+  shapecorr::internal::soup_to_mesh(P, T, s.mesh);
+  return s;
+}
+
+// A cut extremity: the geodesic ball of radius 0.15 D around the vertex of largest agd (the tip of
+// a tail or a limb) removed, then only the largest remaining component kept.
+Shape cut_extremity(const Mesh& m) {
+  Mesh copy = m;
+  auto map = copy.add_property_map<Vertex, double>("v:eval_agd", 0.0).first;
+  shapecorr::compute_average_geodesic_distance(copy, map, SP::number_of_sources(50));
+  std::size_t tip = 0;
+  for(auto v : copy.vertices())
+    if(map[v] > map[Vertex(static_cast<Mesh::size_type>(tip))]) tip = v.idx();
+  const double D = shapecorr::geodesic_diameter(m, SP::geodesic_method(shapecorr::Geodesic_method::FAST_MARCHING));
+  shapecorr::Fast_marching_geodesics<Mesh> fm(m);
+  const Eigen::VectorXd d = fm.distances_from(tip);
+  return keep_faces(m, [&](std::size_t v) { return d[static_cast<Eigen::Index>(v)] > 0.15 * D; });
+}
+
+// Random deletion of n vertices with their incident triangles (seeded).
+Shape delete_vertices(const Mesh& m, std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::set<std::size_t> gone;
+  std::uniform_int_distribution<std::size_t> pick(0, m.number_of_vertices() - 1);
+  while(gone.size() < n) gone.insert(pick(rng));
+  return keep_faces(m, [&](std::size_t v) { return gone.count(v) == 0; });
+}
+
+// One Loop subdivision: the original vertices keep their ids (moved by the Loop mask); the new edge
+// vertices have no ground truth.
+Shape loop_subdivision(const Mesh& m) {
+  Shape s{m, {}};
+  CGAL::Subdivision_method_3::Loop_subdivision(s.mesh, CGAL::parameters::number_of_iterations(1));
+  for(std::size_t i = 0; i < s.mesh.number_of_vertices(); ++i) s.original.push_back(i < m.number_of_vertices() ? i : none);
+  return s;
+}
+
+Mesh read(const std::string& path) {
+  Mesh m;
+  shapecorr::read_triangle_mesh(path, m);
+  return m;
+}
+
+struct Descriptor_result {
+  std::string label;
+  shapecorr::Ranking_curves curves;
+  double seconds = 0;
+};
+
+// The descriptors of the source points and of every target vertex, as a distance functor.
+struct Case {
+  std::string name, title;
+  Shape source;
+  Mesh target;
+  std::vector<std::size_t> points; // source vertex ids (furthest-point samples with ground truth)
+  std::vector<std::size_t> truth;  // target vertex per point
+  double support = 0.2, radius = 0.15;
+};
+
+double sqrt_area(const Mesh& m) { return std::sqrt(CGAL::Polygon_mesh_processing::area(m)); }
+
+std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::string>& descriptors, unsigned threads) {
+  const std::size_t N = c.target.number_of_vertices(), S = c.points.size();
+  shapecorr::Fast_marching_geodesics<Mesh> target_fm(c.target);
+  std::vector<Eigen::VectorXd> gt(S);
+  shapecorr::internal::parallel_for(S, shapecorr::internal::resolve_thread_count(threads),
+                                    [&](std::size_t i, unsigned) { gt[i] = target_fm.distances_from(c.truth[i]); });
+  const double norm = sqrt_area(c.target);
+  std::vector<std::size_t> all(N);
+  for(std::size_t j = 0; j < N; ++j) all[j] = j;
+  std::vector<Descriptor_result> out;
+  for(const std::string& d : descriptors) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Descriptor_result r;
+    auto rank = [&](auto&& dist) {
+      return shapecorr::evaluate_descriptor_ranking(S, N, dist, c.truth, [&](std::size_t i) { return gt[i]; }, norm, threads);
+    };
+    if(d == "gsc" || d == "gsi") {
+      typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
+      const auto np = SP::support_fraction(c.support).agd_radius_fraction(c.radius).number_of_threads(threads);
+      const G gt_(c.target, np);
+      const G gs(c.source.mesh, np.geodesic_diameter(gt_.geodesic_diameter()).agd_offset(gt_.alpha_offset()).agd_scale(gt_.alpha_scale()));
+      if(d == "gsc") {
+        r.label = "GSC";
+        const auto T = gt_.geodesic_spin_contours(all), P = gs.geodesic_spin_contours(c.points);
+        r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::contour_l1_distance(P[i], T[j]); });
+      } else {
+        r.label = "GEODESIC SI";
+        const auto T = gt_.geodesic_spin_images(all), P = gs.geodesic_spin_images(c.points);
+        r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::Spin_image_distance()(P[i], T[j]); });
+      }
+    } else if(d == "hks" || d == "wks" || d == "sihks") {
+      const auto bt = shapecorr::compute_laplace_beltrami_eigenbasis(c.target, 300);
+      const auto bs = shapecorr::compute_laplace_beltrami_eigenbasis(c.source.mesh, 300);
+      Eigen::MatrixXd T, P;
+      if(d == "hks") {
+        r.label = "HKS";
+        T = shapecorr::heat_kernel_signature_matrix(bt);
+        P = shapecorr::heat_kernel_signature_matrix(bs);
+      } else if(d == "wks") {
+        r.label = "WKS";
+        T = shapecorr::wave_kernel_signature_matrix(bt);
+        P = shapecorr::wave_kernel_signature_matrix(bs);
+      } else {
+        r.label = "SI-HKS";
+        T = shapecorr::scale_invariant_heat_kernel_signature_matrix(bt);
+        P = shapecorr::scale_invariant_heat_kernel_signature_matrix(bs);
+      }
+      r.curves = rank([&](std::size_t i, std::size_t j) {
+        return (P.row(static_cast<Eigen::Index>(c.points[i])) - T.row(static_cast<Eigen::Index>(j))).norm();
+      });
+    } else if(d == "si") {
+      r.label = "SPIN IMAGE";
+      // the thesis's baseline: support 0.2 x the target's bounding-box diagonal, vertex normals
+      const shapecorr::Spin_descriptors<Mesh> probe(c.target);
+      const auto np = SP::support_length(0.2 * probe.bounding_box_diagonal()).image_rows(64).image_columns(32).number_of_threads(threads);
+      const shapecorr::Spin_descriptors<Mesh> st(c.target, np), ss(c.source.mesh, np);
+      std::vector<shapecorr::Oriented_point> ot, os;
+      for(std::size_t j = 0; j < N; ++j) ot.push_back(st.oriented_point(Vertex(static_cast<Mesh::size_type>(j))));
+      for(std::size_t p : c.points) os.push_back(ss.oriented_point(Vertex(static_cast<Mesh::size_type>(p))));
+      const auto T = st.for_each_point<shapecorr::Spin_image>(ot, [&](const auto& op) { return st.spin_image(op); });
+      const auto P = ss.for_each_point<shapecorr::Spin_image>(os, [&](const auto& op) { return ss.spin_image(op); });
+      r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::Spin_image_distance()(P[i], T[j]); });
+    } else {
+      throw std::runtime_error("unknown descriptor " + d);
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::cerr << "  " << r.label << ": hit rate k=1 " << r.curves.hit_rate[0] << ", at 1% " << r.curves.hit_rate_at_percent(1.0)
+              << ", geodesic error k=1 " << r.curves.geodesic_error[0] << " (" << r.seconds << " s)\n";
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+// 50 furthest-point samples (geodesic) among the source vertices that have ground truth.
+std::vector<std::size_t> sample_points(const Mesh& m, const std::vector<bool>& has_truth, std::size_t count) {
+  shapecorr::Fast_marching_geodesics<Mesh> fm(m);
+  const std::size_t n = m.number_of_vertices();
+  std::vector<double> mind(n, std::numeric_limits<double>::infinity());
+  std::size_t next = 0;
+  while(next < n && !has_truth[next]) ++next;
+  std::vector<std::size_t> chosen;
+  for(std::size_t it = 0; it <= count && next < n; ++it) { // the first (arbitrary) one is dropped
+    if(it > 0) chosen.push_back(next);
+    const Eigen::VectorXd d = fm.distances_from(next);
+    std::size_t best = n;
+    double far = -1;
+    for(std::size_t v = 0; v < n; ++v) {
+      mind[v] = std::min(mind[v], d[static_cast<Eigen::Index>(v)]);
+      if(has_truth[v] && std::isfinite(mind[v]) && mind[v] > far) { far = mind[v]; best = v; }
+    }
+    next = best;
+  }
+  return chosen;
+}
+
+std::vector<std::string> split(const std::string& s, char c) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string tok;
+  while(std::getline(in, tok, c))
+    if(!tok.empty()) out.push_back(tok);
+  return out;
+}
+
+std::string json_number(double x) {
+  std::ostringstream o;
+  o.precision(6);
+  o << (std::isfinite(x) ? x : 0.0);
+  return o.str();
+}
+
+std::string upper(std::string s) {
+  for(char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/geodesic";
+  std::string pairs = "wolf0:wolf2,centaur0:centaur1,cat0:cat1,dog0:dog1";
+  std::string variants = "whole,cut,delete20,delete40,delete60,loop", descriptors = "gsc,gsi,hks,wks,sihks,si";
+  std::size_t n_points = 50;
+  unsigned seed = 1, threads = 0;
+  for(int i = 1; i + 1 < argc; i += 2) {
+    const std::string k = argv[i], v = argv[i + 1];
+    if(k == "--data") data = v;
+    else if(k == "--output") out = v;
+    else if(k == "--pairs") pairs = v;
+    else if(k == "--variants") variants = v;
+    else if(k == "--descriptors") descriptors = v;
+    else if(k == "--points") n_points = std::stoul(v);
+    else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
+    else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
+    else {
+      std::cerr << "evaluate_geodesic_descriptors: unknown option " << k << "\n";
+      return 2;
+    }
+  }
+  try {
+    std::ifstream probe(data + "/README.md");
+    if(!probe) {
+      std::cerr << "evaluate_geodesic_descriptors: no evaluation data at " << data << " (give --data DIR)\n";
+      return 1;
+    }
+    std::system(("mkdir -p '" + out + "'").c_str());
+    const std::string tosca = data + "/tosca5k/";
+    std::ofstream json(out + "/summary.json");
+    json << "{\n  \"points\": " << n_points << ", \"seed\": " << seed << ", \"geodesic_error_normalization\": \"sqrt(target area)\",\n  \"cases\": {";
+    bool first_case = true;
+    for(const std::string& pair : split(pairs, ',')) {
+      const auto ab = split(pair, ':');
+      if(ab.size() != 2) throw std::runtime_error("--pairs: expected a:b, got " + pair);
+      const Mesh A = read(tosca + "meshes/" + ab[0] + ".off"), B = read(tosca + "meshes/" + ab[1] + ".off");
+      const auto va = shapecorr::read_vts(tosca + "corres/" + ab[0] + ".vts"), vb = shapecorr::read_vts(tosca + "corres/" + ab[1] + ".vts");
+      if(va.size() != vb.size()) throw std::runtime_error(ab[0] + ".vts and " + ab[1] + ".vts differ in length");
+      std::vector<std::size_t> truth_of(A.number_of_vertices(), none); // A vertex -> B vertex
+      for(std::size_t k = 0; k < va.size(); ++k)
+        if(va[k] < truth_of.size() && vb[k] < B.number_of_vertices() && truth_of[va[k]] == none) truth_of[va[k]] = vb[k];
+      const bool wolf = ab[0].rfind("wolf", 0) == 0;
+      for(const std::string& variant : split(variants, ',')) {
+        Case c;
+        c.name = ab[0] + "-" + ab[1] + "-" + variant;
+        c.target = B;
+        c.support = wolf ? 0.4 : 0.2; // the thesis: wolf L = 0.4 D, r = 0.15 D; centaur (and here the others) L = 0.2 D
+        c.radius = 0.15;
+        if(variant == "whole") c.source = whole(A);
+        else if(variant == "cut") c.source = cut_extremity(A);
+        else if(variant.rfind("delete", 0) == 0) c.source = delete_vertices(A, std::stoul(variant.substr(6)), seed);
+        else if(variant == "loop") c.source = loop_subdivision(A);
+        else throw std::runtime_error("unknown variant " + variant);
+        c.title = upper(ab[0] + " TO " + ab[1] + " " + variant);
+        std::vector<bool> has(c.source.mesh.number_of_vertices(), false);
+        for(std::size_t v = 0; v < has.size(); ++v) has[v] = c.source.original[v] != none && truth_of[c.source.original[v]] != none;
+        c.points = sample_points(c.source.mesh, has, n_points);
+        for(std::size_t p : c.points) c.truth.push_back(truth_of[c.source.original[p]]);
+        std::cerr << c.name << ": source " << c.source.mesh.number_of_vertices() << " vertices, target " << B.number_of_vertices() << ", "
+                  << c.points.size() << " points, L = " << c.support << " D, r = " << c.radius << " D\n";
+        const auto rs = run_case(c, split(descriptors, ','), threads);
+        std::ofstream csv(out + "/" + c.name + ".csv");
+        csv << "descriptor,k,percent,hit_rate,geodesic_error\n";
+        std::vector<eval::Curve> hit, err;
+        double emax = 0;
+        for(const auto& r : rs) {
+          eval::Curve h{r.label, {}, {}}, e{r.label, {}, {}};
+          const std::size_t N = r.curves.number_of_targets;
+          for(std::size_t k = 1; k <= N; ++k) {
+            const double pct = 100.0 * static_cast<double>(k) / static_cast<double>(N);
+            csv << r.label << "," << k << "," << pct << "," << r.curves.hit_rate[k - 1] << "," << r.curves.geodesic_error[k - 1] << "\n";
+            if(pct <= 10.0 + 1e-9) {
+              h.x.push_back(pct);
+              h.y.push_back(r.curves.hit_rate[k - 1]);
+              e.x.push_back(pct);
+              e.y.push_back(r.curves.geodesic_error[k - 1]);
+              emax = std::max(emax, r.curves.geodesic_error[k - 1]);
+            }
+          }
+          hit.push_back(h);
+          err.push_back(e);
+        }
+        shapecorr::write_png(out + "/" + c.name + "_hit_rate.png", eval::line_plot(hit, c.title, "100 K / N", "HIT RATE", 10.0, 1.0));
+        shapecorr::write_png(out + "/" + c.name + "_geodesic_error.png",
+                             eval::line_plot(err, c.title, "100 K / N", "GEODESIC ERROR", 10.0, std::max(0.05, std::ceil(emax * 20) / 20)));
+        json << (first_case ? "" : ",") << "\n    \"" << c.name << "\": {\"source_vertices\": " << c.source.mesh.number_of_vertices()
+             << ", \"target_vertices\": " << B.number_of_vertices() << ", \"points\": " << c.points.size() << ", \"support\": " << c.support
+             << ", \"agd_radius\": " << c.radius;
+        first_case = false;
+        for(const auto& r : rs)
+          json << ",\n      \"" << r.label << "\": {\"hit_rate_k1\": " << json_number(r.curves.hit_rate[0]) << ", \"hit_rate_1pct\": "
+               << json_number(r.curves.hit_rate_at_percent(1.0)) << ", \"geodesic_error_k1\": " << json_number(r.curves.geodesic_error[0])
+               << ", \"geodesic_error_1pct\": " << json_number(r.curves.geodesic_error_at_percent(1.0)) << ", \"seconds\": " << json_number(r.seconds)
+               << "}";
+        json << "}";
+        json.flush();
+      }
+    }
+    json << "\n  }\n}\n";
+    std::cerr << "wrote " << out << "/summary.json, the curves (.csv) and plots (.png)\n";
+  } catch(const std::exception& e) {
+    std::cerr << "evaluate_geodesic_descriptors: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
