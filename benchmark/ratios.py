@@ -87,3 +87,22 @@ for name in ("BM_PCL_SpinImage", "BM_PCL_SHOT352"):
     p = runs.get(name)
     if p and sc:
         print(f"{name}: {ms(p)*1e3:.0f} us per point ({ms(p)/ms(sc):.2f}x the Spin Contour)")
+# Geodesic Spin Contour (bench_geodesic_spin): one contour from given distances, all vertices with
+# every geodesic computation, against the geodesic spin image and all-pairs fast marching.
+g = runs.get("BM_GSC_FromDistances")
+gi = runs.get("BM_Reference_GeodesicSpinImage_FromDistances")
+if g:
+    line = f"GSC from distances: {ms(g)*1e3:.0f} us ({g['mean_points']:.0f} points, ball of {g['mean_ball']:.0f} vertices)"
+    if gi:
+        line += f"; geodesic spin image from the same ball: {ms(gi)*1e3:.1f} us (GSC/GSI {ms(g)/ms(gi):.1f}x)"
+    print(line)
+gb = runs.get("BM_GSC_SupportBall")
+if gb:
+    print(f"radius-limited march to L + longest edge: {ms(gb)*1e3:.0f} us per point")
+ga = runs.get("BM_GSC_AllVertices/iterations:1/real_time")
+ap = runs.get("BM_Reference_AllPairsFastMarching/iterations:1/real_time")
+if ga:
+    line = f"GSC of all {int(ga['vertices'])} vertices incl. diameter, local agd and every march: {ms(ga)/1e3:.2f} s"
+    if ap:
+        line += f"; all-pairs fast marching alone: {ms(ap)/1e3:.2f} s (ratio {ms(ga)/ms(ap):.2f})"
+    print(line)
