@@ -7,9 +7,12 @@
 // the .vts files carried through the kept vertex ids. Writes CSV curves, PNG plots and a JSON
 // summary (hit rate at k = 1 and at 1%, mean geodesic error at k = 1, normalized by sqrt(area)).
 //
+// Pairs: TOSCA names (wolf0:wolf2), camel_gallop frames (camel3:camel1, with the pyFM map
+// maps/3_to_1) and the non-isometric lion:cat (lion2cat). TOSCA pairs also get the curves that
+// count the left-right symmetric match as correct (.sym.vts).
 // usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,c:d] [--variants
 //        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,si]
-//        [--points 50] [--seed 1] [--threads T]
+//        [--points 50] [--seed 1] [--threads T] [--support L/D] [--agd-radius r/D]
 #include "plot.h"
 
 #include <shapecorr/descriptors.h>
@@ -117,9 +120,19 @@ Shape loop_subdivision(const Mesh& m) {
   return s;
 }
 
+// Non-manifold edges (camel-gallop-01 has 5) are split: the repair appends the duplicated vertices,
+// so the ids of the file's vertices, which the ground truth refers to, stay valid (checked).
 Mesh read(const std::string& path) {
   Mesh m;
-  shapecorr::read_triangle_mesh(path, m);
+  shapecorr::Read_options o;
+  o.repair_non_manifold = true;
+  const auto r = shapecorr::read_triangle_mesh(path, m, o);
+  std::ifstream in(path);
+  std::string magic;
+  std::size_t n = 0;
+  in >> magic >> n;
+  if(magic == "OFF" && m.number_of_vertices() < n) throw std::runtime_error(path + ": the repair removed vertices; the ground truth ids would shift");
+  if(!r.repairs.empty()) std::cerr << path << ": " << r.repairs.size() << " repair(s), " << m.number_of_vertices() << " vertices (file: " << n << ")\n";
   return m;
 }
 
@@ -136,6 +149,7 @@ struct Case {
   Mesh target;
   std::vector<std::size_t> points; // source vertex ids (furthest-point samples with ground truth)
   std::vector<std::size_t> truth;  // target vertex per point
+  std::vector<std::size_t> truth_sym; // its left-right counterpart (TOSCA .sym.vts), or empty
   double support = 0.2, radius = 0.15;
 };
 
@@ -144,9 +158,11 @@ double sqrt_area(const Mesh& m) { return std::sqrt(CGAL::Polygon_mesh_processing
 std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::string>& descriptors, unsigned threads) {
   const std::size_t N = c.target.number_of_vertices(), S = c.points.size();
   shapecorr::Fast_marching_geodesics<Mesh> target_fm(c.target);
-  std::vector<Eigen::VectorXd> gt(S);
-  shapecorr::internal::parallel_for(S, shapecorr::internal::resolve_thread_count(threads),
-                                    [&](std::size_t i, unsigned) { gt[i] = target_fm.distances_from(c.truth[i]); });
+  std::vector<Eigen::VectorXd> gt(S), gts(c.truth_sym.empty() ? 0 : S);
+  shapecorr::internal::parallel_for(S, shapecorr::internal::resolve_thread_count(threads), [&](std::size_t i, unsigned) {
+    gt[i] = target_fm.distances_from(c.truth[i]);
+    if(!c.truth_sym.empty()) gts[i] = target_fm.distances_from(c.truth_sym[i]);
+  });
   const double norm = sqrt_area(c.target);
   std::vector<std::size_t> all(N);
   for(std::size_t j = 0; j < N; ++j) all[j] = j;
@@ -155,7 +171,9 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
     const auto t0 = std::chrono::steady_clock::now();
     Descriptor_result r;
     auto rank = [&](auto&& dist) {
-      return shapecorr::evaluate_descriptor_ranking(S, N, dist, c.truth, [&](std::size_t i) { return gt[i]; }, norm, threads);
+      if(c.truth_sym.empty()) return shapecorr::evaluate_descriptor_ranking(S, N, dist, c.truth, [&](std::size_t i) { return gt[i]; }, norm, threads);
+      return shapecorr::evaluate_descriptor_ranking(S, N, dist, c.truth, [&](std::size_t i) { return gt[i]; }, c.truth_sym,
+                                                    [&](std::size_t i) { return gts[i]; }, norm, threads);
     };
     if(d == "gsc" || d == "gsi") {
       typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
@@ -208,7 +226,11 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::cerr << "  " << r.label << ": hit rate k=1 " << r.curves.hit_rate[0] << ", at 1% " << r.curves.hit_rate_at_percent(1.0)
-              << ", geodesic error k=1 " << r.curves.geodesic_error[0] << " (" << r.seconds << " s)\n";
+              << ", geodesic error k=1 " << r.curves.geodesic_error[0];
+    if(!r.curves.hit_rate_symmetric.empty())
+      std::cerr << "; symmetric counted: " << r.curves.hit_rate_symmetric[0] << ", " << r.curves.hit_rate_symmetric[r.curves.k_of_percent(1.0) - 1]
+                << ", " << r.curves.geodesic_error_symmetric[0];
+    std::cerr << " (" << r.seconds << " s)\n";
     out.push_back(std::move(r));
   }
   return out;
@@ -236,6 +258,20 @@ std::vector<std::size_t> sample_points(const Mesh& m, const std::vector<bool>& h
   return chosen;
 }
 
+// A dense 0-based map file: line v holds the target vertex of source vertex v.
+std::vector<std::size_t> read_map(const std::string& path, std::size_t n_source, std::size_t n_target) {
+  std::ifstream in(path);
+  if(!in) throw std::runtime_error(path + ": cannot read");
+  std::vector<std::size_t> m;
+  long long v;
+  while(in >> v) {
+    if(v < 0 || static_cast<std::size_t>(v) >= n_target) throw std::runtime_error(path + ": target id " + std::to_string(v) + " out of range");
+    m.push_back(static_cast<std::size_t>(v));
+  }
+  if(m.size() != n_source) throw std::runtime_error(path + ": " + std::to_string(m.size()) + " entries for " + std::to_string(n_source) + " vertices");
+  return m;
+}
+
 std::vector<std::string> split(const std::string& s, char c) {
   std::vector<std::string> out;
   std::stringstream in(s);
@@ -261,10 +297,11 @@ std::string upper(std::string s) {
 
 int main(int argc, char** argv) {
   std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/geodesic";
-  std::string pairs = "wolf0:wolf2,centaur0:centaur1,cat0:cat1,dog0:dog1";
+  std::string pairs = "wolf0:wolf2,centaur0:centaur1,cat0:cat1,dog0:dog1,camel3:camel1,lion:cat";
   std::string variants = "whole,cut,delete20,delete40,delete60,loop", descriptors = "gsc,gsi,hks,wks,sihks,si";
   std::size_t n_points = 50;
   unsigned seed = 1, threads = 0;
+  double support_override = 0, radius_override = -1;
   for(int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if(k == "--data") data = v;
@@ -275,6 +312,8 @@ int main(int argc, char** argv) {
     else if(k == "--points") n_points = std::stoul(v);
     else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
     else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
+    else if(k == "--support") support_override = std::stod(v);
+    else if(k == "--agd-radius") radius_override = std::stod(v);
     else {
       std::cerr << "evaluate_geodesic_descriptors: unknown option " << k << "\n";
       return 2;
@@ -294,12 +333,32 @@ int main(int argc, char** argv) {
     for(const std::string& pair : split(pairs, ',')) {
       const auto ab = split(pair, ':');
       if(ab.size() != 2) throw std::runtime_error("--pairs: expected a:b, got " + pair);
-      const Mesh A = read(tosca + "meshes/" + ab[0] + ".off"), B = read(tosca + "meshes/" + ab[1] + ".off");
-      const auto va = shapecorr::read_vts(tosca + "corres/" + ab[0] + ".vts"), vb = shapecorr::read_vts(tosca + "corres/" + ab[1] + ".vts");
-      if(va.size() != vb.size()) throw std::runtime_error(ab[0] + ".vts and " + ab[1] + ".vts differ in length");
-      std::vector<std::size_t> truth_of(A.number_of_vertices(), none); // A vertex -> B vertex
-      for(std::size_t k = 0; k < va.size(); ++k)
-        if(va[k] < truth_of.size() && vb[k] < B.number_of_vertices() && truth_of[va[k]] == none) truth_of[va[k]] = vb[k];
+      // the shapes and the ground truth: A vertex -> B vertex (and its symmetric counterpart)
+      Mesh A, B;
+      std::vector<std::size_t> truth_of, sym_of;
+      if(ab[0].rfind("camel", 0) == 0 && ab[1].rfind("camel", 0) == 0) { // camel_gallop frames, pyFM maps (0-based)
+        const std::string i = ab[0].substr(5), j = ab[1].substr(5), dir = data + "/camel_gallop/camel_gallop/";
+        auto frame = [&](const std::string& k) { return dir + "camel-gallop-" + (k.size() < 2 ? "0" : "") + k + ".off"; };
+        A = read(frame(i));
+        B = read(frame(j));
+        truth_of = read_map(dir + "maps/" + i + "_to_" + j, A.number_of_vertices(), B.number_of_vertices());
+      } else if(ab[0] == "lion" && ab[1] == "cat") { // non-isometric, dense map (0-based)
+        A = read(data + "/camel_gallop/lion-00.off");
+        B = read(data + "/camel_gallop/cat-00.off");
+        truth_of = read_map(data + "/camel_gallop/lion2cat", A.number_of_vertices(), B.number_of_vertices());
+      } else {
+        A = read(tosca + "meshes/" + ab[0] + ".off");
+        B = read(tosca + "meshes/" + ab[1] + ".off");
+        const auto va = shapecorr::read_vts(tosca + "corres/" + ab[0] + ".vts"), vb = shapecorr::read_vts(tosca + "corres/" + ab[1] + ".vts");
+        const auto vs = shapecorr::read_vts(tosca + "corres/" + ab[0] + ".sym.vts");
+        if(va.size() != vb.size() || vs.size() != vb.size()) throw std::runtime_error(ab[0] + " and " + ab[1] + ": .vts files differ in length");
+        truth_of.assign(A.number_of_vertices(), none);
+        sym_of.assign(A.number_of_vertices(), none);
+        for(std::size_t k = 0; k < va.size(); ++k) {
+          if(va[k] < truth_of.size() && vb[k] < B.number_of_vertices() && truth_of[va[k]] == none) truth_of[va[k]] = vb[k];
+          if(vs[k] < sym_of.size() && vb[k] < B.number_of_vertices() && sym_of[vs[k]] == none) sym_of[vs[k]] = vb[k];
+        }
+      }
       const bool wolf = ab[0].rfind("wolf", 0) == 0;
       for(const std::string& variant : split(variants, ',')) {
         Case c;
@@ -307,16 +366,25 @@ int main(int argc, char** argv) {
         c.target = B;
         c.support = wolf ? 0.4 : 0.2; // the thesis: wolf L = 0.4 D, r = 0.15 D; centaur (and here the others) L = 0.2 D
         c.radius = 0.15;
+        if(support_override > 0) c.support = support_override;
+        if(radius_override >= 0) c.radius = radius_override;
         if(variant == "whole") c.source = whole(A);
         else if(variant == "cut") c.source = cut_extremity(A);
         else if(variant.rfind("delete", 0) == 0) c.source = delete_vertices(A, std::stoul(variant.substr(6)), seed);
         else if(variant == "loop") c.source = loop_subdivision(A);
         else throw std::runtime_error("unknown variant " + variant);
         c.title = upper(ab[0] + " TO " + ab[1] + " " + variant);
+        std::cerr << "  (" << (sym_of.empty() ? "no symmetric ground truth" : "with the symmetric ground truth") << ")\n";
         std::vector<bool> has(c.source.mesh.number_of_vertices(), false);
-        for(std::size_t v = 0; v < has.size(); ++v) has[v] = c.source.original[v] != none && truth_of[c.source.original[v]] != none;
+        for(std::size_t v = 0; v < has.size(); ++v) {
+          const std::size_t o = c.source.original[v];
+          has[v] = o != none && truth_of[o] != none && (sym_of.empty() || sym_of[o] != none);
+        }
         c.points = sample_points(c.source.mesh, has, n_points);
-        for(std::size_t p : c.points) c.truth.push_back(truth_of[c.source.original[p]]);
+        for(std::size_t p : c.points) {
+          c.truth.push_back(truth_of[c.source.original[p]]);
+          if(!sym_of.empty()) c.truth_sym.push_back(sym_of[c.source.original[p]]);
+        }
         std::cerr << c.name << ": source " << c.source.mesh.number_of_vertices() << " vertices, target " << B.number_of_vertices() << ", "
                   << c.points.size() << " points, L = " << c.support << " D, r = " << c.radius << " D\n";
         const auto rs = run_case(c, split(descriptors, ','), threads);
@@ -348,11 +416,16 @@ int main(int argc, char** argv) {
              << ", \"target_vertices\": " << B.number_of_vertices() << ", \"points\": " << c.points.size() << ", \"support\": " << c.support
              << ", \"agd_radius\": " << c.radius;
         first_case = false;
-        for(const auto& r : rs)
+        for(const auto& r : rs) {
           json << ",\n      \"" << r.label << "\": {\"hit_rate_k1\": " << json_number(r.curves.hit_rate[0]) << ", \"hit_rate_1pct\": "
                << json_number(r.curves.hit_rate_at_percent(1.0)) << ", \"geodesic_error_k1\": " << json_number(r.curves.geodesic_error[0])
-               << ", \"geodesic_error_1pct\": " << json_number(r.curves.geodesic_error_at_percent(1.0)) << ", \"seconds\": " << json_number(r.seconds)
-               << "}";
+               << ", \"geodesic_error_1pct\": " << json_number(r.curves.geodesic_error_at_percent(1.0));
+          if(!r.curves.hit_rate_symmetric.empty())
+            json << ", \"hit_rate_k1_sym\": " << json_number(r.curves.hit_rate_symmetric[0]) << ", \"hit_rate_1pct_sym\": "
+                 << json_number(r.curves.hit_rate_symmetric[r.curves.k_of_percent(1.0) - 1]) << ", \"geodesic_error_k1_sym\": "
+                 << json_number(r.curves.geodesic_error_symmetric[0]);
+          json << ", \"seconds\": " << json_number(r.seconds) << "}";
+        }
         json << "}";
         json.flush();
       }
