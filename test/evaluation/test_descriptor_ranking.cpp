@@ -42,6 +42,22 @@ TEST_CASE("descriptor ranking: hit rate and geodesic error on a line of targets"
   CHECK(r.hit_rate_at_percent(100.0) == 1.0);
   // over all N targets: the mean distance to the truth (27 / 10 and 25 / 10)
   CHECK(r.geodesic_error[9] == Approx((2.7 + 2.5) / 2 / 2));
+  CHECK(r.hit_rate_symmetric.empty());
+  // with symmetric counterparts 4 (source 0) and 7 (source 1): source 1's first match is a hit
+  const std::vector<std::size_t> sym = {4, 7};
+  auto geo_sym = [&](std::size_t i) {
+    Eigen::VectorXd g(10);
+    for(int j = 0; j < 10; ++j) g[j] = std::abs(j - static_cast<double>(sym[i]));
+    return g;
+  };
+  const auto s = shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, sym, geo_sym, 2.0);
+  CHECK(s.hit_rate == r.hit_rate); // the plain curves are unchanged
+  CHECK(s.geodesic_error == r.geodesic_error);
+  CHECK(s.hit_rate_symmetric[0] == 1.0);
+  CHECK(s.geodesic_error_symmetric[0] == 0.0);
+  // k = 2: source 0 ranks 3, 2 -> errors 0, min(1, 2) = 1; source 1 ranks 7, 6 -> 0, min(1, 1) = 1
+  CHECK(s.geodesic_error_symmetric[1] == Approx((0.5 + 0.5) / 2 / 2));
+  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, std::vector<std::size_t>{4}, geo_sym, 2.0), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3}, geo, 2.0), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3, 10}, geo, 2.0), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, 0.0), shapecorr::Invalid_input);
