@@ -7,6 +7,8 @@
 //  - comparing two contours (row-merge L1, and the kd-tree L1) against comparing two images
 //    (Johnson & Hebert correlation);
 //  - with PCL (when built with it): PCL's spin image (153 bins) and SHOT352 for one point.
+#include "../bench_mesh.h"
+
 #include <shapecorr/descriptors.h>
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
@@ -37,14 +39,7 @@ struct Fixture {
   std::vector<shapecorr::Spin_contour> contours;
   std::vector<shapecorr::Spin_image> images;
   Fixture() {
-    const char* env = std::getenv("SHAPECORR_BENCH_MESH");
-    const std::string name = env ? env : std::string(SHAPECORR_BENCH_DATA_DIR) + "/classic/libigl/fandisk.off";
-    try {
-      shapecorr::read_triangle_mesh(name, mesh);
-    } catch(const std::exception& e) {
-      std::cerr << "benchmark mesh unavailable (" << e.what() << "): using a generated torus\n";
-      shapecorr::make_torus(mesh, 2.0, 0.7, 120, 60);
-    }
+    bench::load_mesh<Mesh>(mesh, "classic/libigl/fandisk.off", [](Mesh& m) { shapecorr::make_torus(m, 2.0, 0.7, 120, 60); }, "a generated torus");
     const shapecorr::Spin_descriptors<Mesh> probe(mesh);
     sd.reset(new shapecorr::Spin_descriptors<Mesh>(mesh, SP::support_length(probe.bounding_box_diagonal())
                                                              .image_rows(std::size_t(120)).image_columns(std::size_t(60))

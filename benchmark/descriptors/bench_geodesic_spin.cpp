@@ -7,6 +7,8 @@
 //    radius-limited march per vertex) vs all-pairs fast-marching distances (what the thesis computed
 //    first, in about 15 minutes, before any descriptor).
 // Run through benchmark/run, which writes JSON and the ratios.
+#include "../bench_mesh.h"
+
 #include <shapecorr/descriptors.h>
 #include <shapecorr/geodesics.h>
 #include <shapecorr/io.h>
@@ -34,15 +36,7 @@ struct Fixture {
   std::unique_ptr<GSD> gsd;
   std::vector<GSD::Ball> balls; // of 64 vertices spread over the mesh
   Fixture() {
-    const char* env = std::getenv("SHAPECORR_BENCH_MESH");
-    name = env ? env : std::string(SHAPECORR_BENCH_DATA_DIR) + "/tosca5k/meshes/wolf0.off";
-    try {
-      shapecorr::read_triangle_mesh(name, mesh);
-    } catch(const std::exception& e) {
-      std::cerr << "benchmark mesh unavailable (" << e.what() << "): using a generated sphere\n";
-      name = "icosphere(5)";
-      shapecorr::make_icosphere(mesh, 5);
-    }
+    name = bench::load_mesh<Mesh>(mesh, "tosca5k/meshes/wolf0.off", [](Mesh& m) { shapecorr::make_icosphere(m, 5); }, "icosphere(5)");
     gsd.reset(new GSD(mesh, SP::support_fraction(0.4).agd_radius_fraction(0.15)));
     const std::size_t n = gsd->number_of_vertices();
     for(std::size_t k = 0; k < 64; ++k) {

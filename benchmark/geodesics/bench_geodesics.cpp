@@ -5,6 +5,8 @@
 //  - exact single source (CGAL Surface_mesh_shortest_path) vs one heat query.
 // Accuracy against exact distances on 50 furthest-point sources is reported as counters
 // (mean_abs_err_pct_D). Run through benchmark/run, which writes JSON and the ratios.
+#include "../bench_mesh.h"
+
 #include <shapecorr/geodesics.h>
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
@@ -33,15 +35,7 @@ struct Fixture {
   std::vector<std::size_t> sources50;      // 50 furthest-point sources
   std::vector<Eigen::VectorXd> exact50;    // exact distances from them
   Fixture() {
-    const char* env = std::getenv("SHAPECORR_BENCH_MESH");
-    name = env ? env : std::string(SHAPECORR_BENCH_DATA_DIR) + "/tosca5k/meshes/wolf0.off";
-    try {
-      shapecorr::read_triangle_mesh(name, mesh);
-    } catch(const std::exception& e) {
-      std::cerr << "benchmark mesh unavailable (" << e.what() << "): using a generated sphere\n";
-      name = "icosphere(5)";
-      shapecorr::make_icosphere(mesh, 5);
-    }
+    name = bench::load_mesh<Mesh>(mesh, "tosca5k/meshes/wolf0.off", [](Mesh& m) { shapecorr::make_icosphere(m, 5); }, "icosphere(5)");
     shapecorr::Exact_geodesics<Mesh> exact(mesh);
     D = shapecorr::internal::diameter_by_sweeps(exact, 0, 4);
     std::vector<vertex_descriptor> s;

@@ -4,6 +4,8 @@
 //    shift-invert run for all 300 pairs (the plain use of Spectra), same operators, same run;
 //  - HKS, WKS (100 scales) and SI-HKS for every vertex from the basis (descriptor time only);
 //  - the whole job: eigenbasis + HKS + WKS.
+#include "../bench_mesh.h"
+
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
 #include <shapecorr/spectral.h>
@@ -24,14 +26,7 @@ struct Fixture {
   shapecorr::internal::Laplace_operators op;
   shapecorr::Laplace_beltrami_eigenbasis basis;
   Fixture() {
-    const char* env = std::getenv("SHAPECORR_BENCH_MESH");
-    const std::string name = env ? env : std::string(SHAPECORR_BENCH_DATA_DIR) + "/tosca5k/meshes/wolf0.off";
-    try {
-      shapecorr::read_triangle_mesh(name, mesh);
-    } catch(const std::exception& e) {
-      std::cerr << "benchmark mesh unavailable (" << e.what() << "): using a generated sphere\n";
-      shapecorr::make_icosphere(mesh, 5);
-    }
+    bench::load_mesh<Mesh>(mesh, "tosca5k/meshes/wolf0.off", [](Mesh& m) { shapecorr::make_icosphere(m, 5); }, "icosphere(5)");
     op = shapecorr::internal::laplace_operators(mesh, shapecorr::parameters::default_values());
     basis = shapecorr::compute_laplace_beltrami_eigenbasis(mesh, 300);
   }

@@ -117,26 +117,7 @@ TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted"
   const double W = 12.0, H = 1.0;
   TestType whole, cut;
   make_strip(whole, nx, ny, W, H, 0.0);
-  {
-    std::vector<std::array<double, 3>> P;
-    std::vector<std::array<std::size_t, 3>> T;
-    TestType g;
-    make_strip(g, nx, ny, W, H, 0.0);
-    for(int j = 0; j <= ny; ++j)
-      for(int i = 0; i <= 50; ++i) P.push_back({W * i / nx, H * j / ny, 0.0});
-    auto id = [](int i, int j) { return static_cast<std::size_t>(j * 51 + i); };
-    for(int j = 0; j < ny; ++j)
-      for(int i = 0; i < 50; ++i) { // the same diagonals as make_grid
-        if((i + j) % 2 == 0) {
-          T.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-          T.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        } else {
-          T.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-          T.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-      }
-    shapecorr::internal::soup_to_mesh(P, T, cut);
-  }
+  shapecorr::make_grid(cut, 50, ny, W * 50 / nx, H); // the same vertices and diagonals for x <= 5
   const double D = std::sqrt(W * W + H * H);
   // L = 0.1 D = 1.2, r = 0.1 D: P at x = 1 needs the strip up to x = 1 + 1.2 + 1.2 (+ an edge) < 5.
   // The part gets the whole shape's lengths: D and the agd normalization.
