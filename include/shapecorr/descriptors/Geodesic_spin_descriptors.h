@@ -24,6 +24,7 @@
 #include <limits>
 #include <mutex>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -87,6 +88,7 @@ struct Geodesic_section {
 /// | `support_fraction` | L / D | `double` | 0.2 |
 /// | `agd_radius_fraction` | r / D for the local agd; 0 selects the global agd | `double` | 0.15 |
 /// | `number_of_sources` | global agd: furthest-point sources averaged | `std::size_t` | 100 |
+/// | `geodesic_engine` | global agd: the engine of its distance fields | pointer to a `GeodesicDistanceEngine` | this object's fast marching |
 /// | `geodesic_diameter` | D in mesh units (e.g. the whole shape's D for a part of it) | `double` | computed (farthest-point sweeps) |
 /// | `agd_offset`, `agd_scale` | alpha = (agd - offset) / scale, mesh units | `double` | min agd, max agd - min agd (D when the agd is constant) |
 /// | `image_rows`, `image_columns` | beta samples (rows), alpha samples (columns) | `std::size_t` | 64, 64 |
@@ -132,7 +134,12 @@ public:
       m_agd = internal::local_average_geodesic_distances(m_engine, m_radius, internal::progress_of(np));
     } else {
       m_agd.assign(n, 0.0);
-      compute_average_geodesic_distance(tm, Agd_writer{&m_agd, &m_engine}, np);
+      // with this object's fast-marching engine unless the caller gave an engine of their own
+      if constexpr(std::is_same<decltype(get_parameter(np, internal_np::geodesic_engine)), CGAL::internal_np::Param_not_found>::value)
+        compute_average_geodesic_distance(tm, Agd_writer{&m_agd, &m_engine},
+                                          shapecorr::Named_function_parameters<const Fast_marching_geodesics<TriangleMesh>*, internal_np::geodesic_engine_t, NamedParameters>(&m_engine, np));
+      else
+        compute_average_geodesic_distance(tm, Agd_writer{&m_agd, &m_engine}, np);
     }
     // alpha = (agd - offset) / scale: by default the range of the agd over the mesh maps to [0, 1]
     const auto range = std::minmax_element(m_agd.begin(), m_agd.end());
