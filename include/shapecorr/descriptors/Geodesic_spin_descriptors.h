@@ -149,20 +149,21 @@ public:
     m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale), spread > 1e-9 * m_diameter ? spread : m_diameter);
     if(!(m_alpha_scale > 0) || !std::isfinite(m_alpha_scale) || !std::isfinite(m_alpha_offset))
       throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_scale must be positive and agd_offset finite");
-    // topology: faces with their neighbours, faces around each vertex, the longest edge
+    // topology: faces with their neighbours; each face listed once, under its corner of smallest
+    // index (its owner); the longest edge
     m_links = internal::build_face_links(a);
-    m_vertex_faces_begin.assign(n + 1, 0);
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k) ++m_vertex_faces_begin[static_cast<std::size_t>(m_links[f].v[k]) + 1];
-    for(std::size_t v = 0; v < n; ++v) m_vertex_faces_begin[v + 1] += m_vertex_faces_begin[v];
-    m_vertex_faces.resize(3 * m);
-    std::vector<std::uint32_t> next(m_vertex_faces_begin.begin(), m_vertex_faces_begin.end() - 1);
+    m_owned_begin.assign(n + 1, 0);
+    auto owner = [&](std::size_t f) { return static_cast<std::size_t>(std::min({m_links[f].v[0], m_links[f].v[1], m_links[f].v[2]})); };
+    for(std::size_t f = 0; f < m; ++f) ++m_owned_begin[owner(f) + 1];
+    for(std::size_t v = 0; v < n; ++v) m_owned_begin[v + 1] += m_owned_begin[v];
+    m_owned.resize(m);
+    std::vector<std::uint32_t> next(m_owned_begin.begin(), m_owned_begin.end() - 1);
     double longest = 0;
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k) {
-        m_vertex_faces[next[static_cast<std::size_t>(m_links[f].v[k])]++] = static_cast<std::uint32_t>(f);
+    for(std::size_t f = 0; f < m; ++f) {
+      m_owned[next[owner(f)]++] = static_cast<std::uint32_t>(f);
+      for(int k = 0; k < 3; ++k)
         longest = std::max(longest, (a.point(static_cast<std::size_t>(m_links[f].v[k])) - a.point(static_cast<std::size_t>(m_links[f].v[(k + 1) % 3]))).norm());
-      }
+    }
     m_ball_radius = m_support + 1.01 * longest;
     // A(Q)/3: the share of a vertex in the area (the geodesic spin image's weights)
     const Eigen::VectorXd A = internal::incident_triangle_areas(a);
@@ -237,8 +238,6 @@ private:
     typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
     Ball ball;
     internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
-    std::vector<std::uint32_t> face_seen;
-    std::uint32_t epoch = 0;
   };
   static std::uint64_t next_id() {
     static std::atomic<std::uint64_t> counter(0);
@@ -256,8 +255,6 @@ private:
     const std::size_t n = number_of_vertices();
     st.cws.resize(n);
     for(std::size_t v = 0; v < n; ++v) unset(st, v);
-    st.face_seen.assign(m_links.size(), 0u);
-    st.epoch = 0;
   }
   void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
   // A vertex outside the ball: beyond the last row.
@@ -280,31 +277,14 @@ private:
       st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
       st.cws.set_rows(p.first, t, R);
     }
-    if(st.epoch == 0xFFFFFFFFu) {
-      std::fill(st.face_seen.begin(), st.face_seen.end(), 0u);
-      st.epoch = 0;
-    }
-    const std::uint32_t key = ++st.epoch;
     internal::Geodesic_section sec;
     sec.merge_eps = 1e-12 * m_alpha_scale;
     Spin_contour c(R, m_support, 0.0, 1.0);
     internal::build_level_set_contour(m_links, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
-      // every face an isoline crosses has a corner inside the disc: when the disc holds a large
-      // part of the mesh, scanning all faces (cheap: the others cross no row) is faster than
-      // collecting the faces around its vertices
-      if(3 * ball.size() > n) {
-        for(std::size_t f = 0; f < m_links.size(); ++f) visit(f);
-        return;
-      }
-      for(const auto& p : ball) {
-        if(!(p.second < m_support)) continue;
-        for(std::uint32_t k = m_vertex_faces_begin[p.first]; k < m_vertex_faces_begin[p.first + 1]; ++k) {
-          const std::uint32_t f = m_vertex_faces[k];
-          if(st.face_seen[f] == key) continue;
-          st.face_seen[f] = key;
-          visit(f);
-        }
-      }
+      // every face an isoline crosses has a corner inside the disc, hence all its corners in the
+      // ball (radius L + the longest edge), its owner among them: each such face once
+      for(const auto& p : ball)
+        for(std::uint32_t k = m_owned_begin[p.first]; k < m_owned_begin[p.first + 1]; ++k) visit(m_owned[k]);
     }, st.cws, c);
     for(const auto& p : ball) unset(st, p.first);
     return c;
@@ -356,7 +336,7 @@ private:
   double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0;
   std::vector<double> m_agd, m_vertex_area;
   std::vector<internal::Face_link> m_links;
-  std::vector<std::uint32_t> m_vertex_faces_begin, m_vertex_faces;
+  std::vector<std::uint32_t> m_owned_begin, m_owned; // faces by their corner of smallest index
   unsigned m_threads = 1;
 };
 
