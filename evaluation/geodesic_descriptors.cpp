@@ -19,6 +19,7 @@
 #include <shapecorr/evaluation/descriptor_ranking.h>
 #include <shapecorr/geodesics.h>
 #include <shapecorr/io.h>
+#include <shapecorr/sampling.h>
 #include <shapecorr/mesh/primitives.h>
 #include <shapecorr/spectral.h>
 
@@ -33,6 +34,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <sstream>
@@ -88,7 +90,7 @@ Shape keep_faces(const Mesh& m, Keep&& keep) {
 }
 
 // A cut extremity: the geodesic ball of radius 0.15 D around the vertex of largest agd (the tip of
-// a tail or a limb) removed, then only the largest remaining component kept.
+// a tail or a limb) removed.
 Shape cut_extremity(const Mesh& m) {
   Mesh copy = m;
   auto map = copy.add_property_map<Vertex, double>("v:eval_agd", 0.0).first;
@@ -166,6 +168,26 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
   const double norm = sqrt_area(c.target);
   std::vector<std::size_t> all(N);
   for(std::size_t j = 0; j < N; ++j) all[j] = j;
+  // Shared by the descriptors of a case, built when first needed (its time counts in that
+  // descriptor's seconds): the geodesic spin descriptors of target and source, the eigenbases.
+  typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
+  std::unique_ptr<G> gsd_target, gsd_source;
+  auto geodesic = [&]() {
+    if(!gsd_target) {
+      const auto np = SP::support_fraction(c.support).agd_radius_fraction(c.radius).number_of_threads(threads);
+      gsd_target.reset(new G(c.target, np));
+      gsd_source.reset(new G(c.source.mesh, np.geodesic_diameter(gsd_target->geodesic_diameter())
+                                                .agd_offset(gsd_target->alpha_offset())
+                                                .agd_scale(gsd_target->alpha_scale())));
+    }
+  };
+  std::unique_ptr<shapecorr::Laplace_beltrami_eigenbasis> basis_target, basis_source;
+  auto spectral = [&]() {
+    if(!basis_target) {
+      basis_target.reset(new shapecorr::Laplace_beltrami_eigenbasis(shapecorr::compute_laplace_beltrami_eigenbasis(c.target, 300)));
+      basis_source.reset(new shapecorr::Laplace_beltrami_eigenbasis(shapecorr::compute_laplace_beltrami_eigenbasis(c.source.mesh, 300)));
+    }
+  };
   std::vector<Descriptor_result> out;
   for(const std::string& d : descriptors) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -176,10 +198,9 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
                                                     [&](std::size_t i) { return gts[i]; }, norm, threads);
     };
     if(d == "gsc" || d == "gsi") {
-      typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
-      const auto np = SP::support_fraction(c.support).agd_radius_fraction(c.radius).number_of_threads(threads);
-      const G gt_(c.target, np);
-      const G gs(c.source.mesh, np.geodesic_diameter(gt_.geodesic_diameter()).agd_offset(gt_.alpha_offset()).agd_scale(gt_.alpha_scale()));
+      geodesic();
+      const G& gt_ = *gsd_target;
+      const G& gs = *gsd_source;
       if(d == "gsc") {
         r.label = "GSC";
         const auto T = gt_.geodesic_spin_contours(all), P = gs.geodesic_spin_contours(c.points);
@@ -190,8 +211,9 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
         r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::Spin_image_distance()(P[i], T[j]); });
       }
     } else if(d == "hks" || d == "wks" || d == "sihks") {
-      const auto bt = shapecorr::compute_laplace_beltrami_eigenbasis(c.target, 300);
-      const auto bs = shapecorr::compute_laplace_beltrami_eigenbasis(c.source.mesh, 300);
+      spectral();
+      const auto& bt = *basis_target;
+      const auto& bs = *basis_source;
       Eigen::MatrixXd T, P;
       if(d == "hks") {
         r.label = "HKS";
@@ -236,26 +258,19 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
   return out;
 }
 
-// 50 furthest-point samples (geodesic) among the source vertices that have ground truth.
+// Furthest-point samples (geodesic; the library's sampling, the arbitrary start dropped) among
+// the source vertices that have ground truth: the others are given distance -1, so never chosen.
 std::vector<std::size_t> sample_points(const Mesh& m, const std::vector<bool>& has_truth, std::size_t count) {
   shapecorr::Fast_marching_geodesics<Mesh> fm(m);
   const std::size_t n = m.number_of_vertices();
-  std::vector<double> mind(n, std::numeric_limits<double>::infinity());
-  std::size_t next = 0;
-  while(next < n && !has_truth[next]) ++next;
-  std::vector<std::size_t> chosen;
-  for(std::size_t it = 0; it <= count && next < n; ++it) { // the first (arbitrary) one is dropped
-    if(it > 0) chosen.push_back(next);
-    const Eigen::VectorXd d = fm.distances_from(next);
-    std::size_t best = n;
-    double far = -1;
-    for(std::size_t v = 0; v < n; ++v) {
-      mind[v] = std::min(mind[v], d[static_cast<Eigen::Index>(v)]);
-      if(has_truth[v] && std::isfinite(mind[v]) && mind[v] > far) { far = mind[v]; best = v; }
-    }
-    next = best;
-  }
-  return chosen;
+  const std::size_t first = static_cast<std::size_t>(std::find(has_truth.begin(), has_truth.end(), true) - has_truth.begin());
+  if(first == n) return {};
+  return shapecorr::internal::furthest_point_sampling_indices(n, count, first, false, [&](std::size_t s) {
+    Eigen::VectorXd d = fm.distances_from(s);
+    for(std::size_t v = 0; v < n; ++v)
+      if(!has_truth[v]) d[static_cast<Eigen::Index>(v)] = -1;
+    return d;
+  });
 }
 
 // A dense 0-based map file: line v holds the target vertex of source vertex v.

@@ -262,20 +262,13 @@ int cmd_match(const Args& a) {
     const std::size_t v = parse_ids(a.get("distance-view"), source.number_of_vertices())[0];
     const std::string prefix = a.get("distance-view-prefix", output);
     const Descriptor_set all_source = compute_set(source, all_ids(source.number_of_vertices()), type, a, target, "distance view (source)", &norm);
-    Descriptor_set one;
-    one.contours.assign(all_source.contours.begin() + static_cast<std::ptrdiff_t>(all_source.contours.empty() ? 0 : v),
-                        all_source.contours.empty() ? all_source.contours.begin() : all_source.contours.begin() + static_cast<std::ptrdiff_t>(v) + 1);
-    one.images.assign(all_source.images.begin() + static_cast<std::ptrdiff_t>(all_source.images.empty() ? 0 : v),
-                      all_source.images.empty() ? all_source.images.begin() : all_source.images.begin() + static_cast<std::ptrdiff_t>(v) + 1);
-    if(all_source.rows.rows() > 0) one.rows = all_source.rows.row(static_cast<Eigen::Index>(v));
-    write_values(prefix + "_source.ply", source, distances_to(one, all_source, 0), {v});
-    std::vector<std::size_t> best;
-    const std::vector<double> dt = distances_to(one, t, 0);
-    best.push_back(static_cast<std::size_t>(std::min_element(dt.begin(), dt.end()) - dt.begin()));
-    write_values(prefix + "_target.ply", target, dt, best);
+    write_values(prefix + "_source.ply", source, distances_to(all_source, all_source, v), {v});
+    const std::vector<double> dt = distances_to(all_source, t, v);
+    const std::size_t best = static_cast<std::size_t>(std::min_element(dt.begin(), dt.end()) - dt.begin());
+    write_values(prefix + "_target.ply", target, dt, {best});
     if(!a.has("quiet"))
       std::cerr << "match: distance to source vertex " << v << " -> " << prefix << "_source.ply, " << prefix << "_target.ply (marked: the nearest target vertex "
-                << best[0] << ")\n";
+                << best << ")\n";
   }
   if(!a.has("quiet"))
     std::cerr << "match: " << type << ", " << ids.size() << " source points against " << target.number_of_vertices() << " target vertices (descriptors "

@@ -9,6 +9,7 @@
 #include <shapecorr/descriptors/Spin_contour.h>
 #include <shapecorr/descriptors/Spin_image.h>
 #include <shapecorr/descriptors/internal/contour_construction.h>
+#include <shapecorr/descriptors/internal/spin_construction.h>
 #include <shapecorr/geodesics/Fast_marching_geodesics.h>
 #include <shapecorr/geodesics/average_geodesic_distance.h>
 #include <shapecorr/geodesics/geodesic_diameter.h>
@@ -291,21 +292,11 @@ private:
   }
   Spin_image image_from(const Ball& ball) const {
     Spin_image img(m_rows, m_cols, m_support);
-    const long R = static_cast<long>(m_rows), C = static_cast<long>(m_cols);
     for(const auto& p : ball) {
       if(p.first >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin image: a vertex index of the ball is out of range");
       if(!(p.second <= m_support)) continue;
-      const double u = (m_agd[p.first] - m_alpha_offset) / m_alpha_scale * static_cast<double>(m_cols) - 0.5;
-      const double v = p.second / m_support * static_cast<double>(m_rows) - 0.5;
-      const double fu = std::floor(u), fv = std::floor(v);
-      const double du = u - fu, dv = v - fv;
-      const long c0 = static_cast<long>(fu), r0 = static_cast<long>(fv);
-      const double w = m_vertex_area[p.first];
-      const double ws[4] = {(1 - du) * (1 - dv), du * (1 - dv), (1 - du) * dv, du * dv};
-      const long rs[4] = {r0, r0, r0 + 1, r0 + 1}, cs[4] = {c0, c0 + 1, c0, c0 + 1};
-      for(int k = 0; k < 4; ++k)
-        if(rs[k] >= 0 && rs[k] < R && cs[k] >= 0 && cs[k] < C && ws[k] > 0)
-          img.at(static_cast<std::size_t>(rs[k]), static_cast<std::size_t>(cs[k])) += static_cast<float>(w * ws[k]);
+      internal::splat_bilinear(img, (m_agd[p.first] - m_alpha_offset) / m_alpha_scale * static_cast<double>(m_cols) - 0.5,
+                               p.second / m_support * static_cast<double>(m_rows) - 0.5, m_vertex_area[p.first]);
     }
     return img;
   }
@@ -340,6 +331,20 @@ private:
   unsigned m_threads = 1;
 };
 
+namespace internal {
+// `batch(gs, ids)` (one of the batch members) for the vertices of a range, written into a map.
+template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters, typename Batch>
+void geodesic_descriptors_for_vertices(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap map, const NamedParameters& np,
+                                       Batch&& batch) {
+  const Geodesic_spin_descriptors<TriangleMesh> gs(tm, np);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vs(vertices.begin(), vertices.end());
+  std::vector<std::size_t> ids;
+  for(auto v : vs) ids.push_back(gs.index(v));
+  const auto d = batch(gs, ids, progress_of(np));
+  for(std::size_t i = 0; i < vs.size(); ++i) put(map, vs[i], d[i]);
+}
+} // namespace internal
+
 /// \ingroup PkgShapeCorrDescriptors
 /// Geodesic Spin Contours of the vertices of `vertices`, in parallel, written into `contours` (a
 /// `WritablePropertyMap` from `vertex_descriptor` to `Spin_contour`); compare them with
@@ -348,12 +353,9 @@ private:
 template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
 void compute_geodesic_spin_contours(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap contours,
                                     const NamedParameters& np = CGAL::parameters::default_values()) {
-  const Geodesic_spin_descriptors<TriangleMesh> gs(tm, np);
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vs(vertices.begin(), vertices.end());
-  std::vector<std::size_t> ids;
-  for(auto v : vs) ids.push_back(gs.index(v));
-  const std::vector<Spin_contour> c = gs.geodesic_spin_contours(ids, internal::progress_of(np));
-  for(std::size_t i = 0; i < vs.size(); ++i) put(contours, vs[i], c[i]);
+  internal::geodesic_descriptors_for_vertices(tm, vertices, contours, np, [](const auto& gs, const auto& ids, const auto& progress) {
+    return gs.geodesic_spin_contours(ids, progress);
+  });
 }
 
 /// \ingroup PkgShapeCorrDescriptors
@@ -361,12 +363,9 @@ void compute_geodesic_spin_contours(const TriangleMesh& tm, const VertexRange& v
 template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
 void compute_geodesic_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
                                   const NamedParameters& np = CGAL::parameters::default_values()) {
-  const Geodesic_spin_descriptors<TriangleMesh> gs(tm, np);
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vs(vertices.begin(), vertices.end());
-  std::vector<std::size_t> ids;
-  for(auto v : vs) ids.push_back(gs.index(v));
-  const std::vector<Spin_image> c = gs.geodesic_spin_images(ids, internal::progress_of(np));
-  for(std::size_t i = 0; i < vs.size(); ++i) put(images, vs[i], c[i]);
+  internal::geodesic_descriptors_for_vertices(tm, vertices, images, np, [](const auto& gs, const auto& ids, const auto& progress) {
+    return gs.geodesic_spin_images(ids, progress);
+  });
 }
 
 } // namespace shapecorr
