@@ -63,7 +63,7 @@ struct Geodesic_norm {
 std::unique_ptr<shapecorr::Geodesic_spin_descriptors<Mesh>> make_geodesic(const Mesh& m, const Args& a, Geodesic_norm* norm,
                                                                           const std::function<void(std::size_t, std::size_t)>& progress) {
   typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
-  const double support = to_double(a.get("support", "0.2"), "--support"), radius = to_double(a.get("agd-radius", "0.15"), "--agd-radius");
+  const double support = to_double(a.get("support", "0.4"), "--support"), radius = to_double(a.get("agd-radius", "0.15"), "--agd-radius");
   const std::size_t rows = to_count(a.get("rows", "64"), "--rows"), cols = to_count(a.get("cols", "64"), "--cols");
   const auto np = SP::support_fraction(support).agd_radius_fraction(radius).image_rows(rows).image_columns(cols).progress_callback(progress);
   std::unique_ptr<G> g;

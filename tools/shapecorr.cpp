@@ -52,8 +52,9 @@ usage:
   shapecorr descriptors MESH --type gsc|geodesic-spin-image [--support F] [--agd-radius F]
                          [--rows R] [--cols C] [--vertices V,...] --output FILE.csv
       Geodesic Spin Contour / geodesic spin image (thesis chapter 4): coordinates (agd, gd).
-      Support L and agd radius r as fractions of the geodesic diameter D (defaults 0.2 and 0.15;
-      --agd-radius 0: global agd); 64 x 64 samples; beta = gd / L, alpha = agd / D. Same outputs
+      Support L and agd radius r as fractions of the geodesic diameter D (defaults 0.4 and 0.15;
+      --agd-radius 0: global agd); 64 x 64 samples; beta = gd / L, alpha = agd scaled by its
+      range over the mesh (a match's source takes the target's D and scale). Same outputs
       as the Spin Contour, --plot V (gd grows downwards) and --distance-to V.
   shapecorr match SOURCE TARGET --descriptor NAME [--points N | --source-points FILE] --output FILE
                   [--lines FILE.obj|.ply] [descriptor options as above]

@@ -86,7 +86,7 @@ struct Geodesic_section {
 /// | name | meaning | type | default |
 /// |---|---|---|---|
 /// | `vertex_point_map`, `vertex_index_map` | positions, 0-based indices | property maps | the mesh's |
-/// | `support_fraction` | L / D | `double` | 0.2 |
+/// | `support_fraction` | L / D (0.4: see the parameter study in doc/geodesic_spin_contour.md) | `double` | 0.4 |
 /// | `agd_radius_fraction` | r / D for the local agd; 0 selects the global agd | `double` | 0.15 |
 /// | `number_of_sources` | global agd: furthest-point sources averaged | `std::size_t` | 100 |
 /// | `geodesic_engine` | global agd: the engine of its distance fields | pointer to a `GeodesicDistanceEngine` | this object's fast marching |
@@ -114,7 +114,7 @@ public:
     const std::size_t n = a.number_of_vertices(), m = a.number_of_faces();
     if(n == 0 || m == 0) throw Invalid_input(Mesh_defect::empty_mesh, "geodesic spin descriptors: the mesh has no vertex or no face");
     if(!a.V.allFinite()) throw Invalid_input(Mesh_defect::non_finite_coordinate, "geodesic spin descriptors: a vertex has a non-finite coordinate");
-    const double support_fraction = choose_parameter(get_parameter(np, internal_np::support_fraction), 0.2);
+    const double support_fraction = choose_parameter(get_parameter(np, internal_np::support_fraction), 0.4);
     const double radius_fraction = choose_parameter(get_parameter(np, internal_np::agd_radius_fraction), 0.15);
     m_rows = choose_parameter(get_parameter(np, internal_np::image_rows), std::size_t(64));
     m_cols = choose_parameter(get_parameter(np, internal_np::image_columns), std::size_t(64));
