@@ -317,6 +317,11 @@ int main(int argc, char** argv) {
   std::size_t n_points = 50;
   unsigned seed = 1, threads = 0;
   double support_override = 0, radius_override = -1;
+  if(argc % 2 == 0) { // --help, or an option without its value
+    std::cerr << "usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,...] [--variants whole,cut,delete20,...]\n"
+                 "       [--descriptors gsc,gsi,hks,wks,sihks,si] [--points N] [--seed S] [--threads T] [--support F] [--agd-radius F]\n";
+    return std::string(argv[argc - 1]) == "--help" ? 0 : 2;
+  }
   for(int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if(k == "--data") data = v;

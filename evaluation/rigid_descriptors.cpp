@@ -335,6 +335,10 @@ int main(int argc, char** argv) {
   std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/rigid", only;
   std::size_t n_points = 1000;
   unsigned seed = 1, threads = 0;
+  if(argc % 2 == 0) { // --help, or an option without its value
+    std::cerr << "usage: evaluate_rigid_descriptors [--data DIR] [--output DIR] [--points N] [--seed S] [--experiments a,b,...] [--threads T]\n";
+    return std::string(argv[argc - 1]) == "--help" ? 0 : 2;
+  }
   for(int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if(k == "--data") data = v;
