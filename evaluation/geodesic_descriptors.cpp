@@ -13,6 +13,7 @@
 // usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,c:d] [--variants
 //        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,si]
 //        [--points 50] [--seed 1] [--threads T] [--support L/D] [--agd-radius r/D]
+#include "program.h"
 #include "plot.h"
 
 #include <shapecorr/descriptors.h>
@@ -296,13 +297,6 @@ std::vector<std::string> split(const std::string& s, char c) {
   return out;
 }
 
-std::string json_number(double x) {
-  std::ostringstream o;
-  o.precision(6);
-  o << (std::isfinite(x) ? x : 0.0);
-  return o.str();
-}
-
 std::string upper(std::string s) {
   for(char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   return s;
@@ -317,34 +311,26 @@ int main(int argc, char** argv) {
   std::size_t n_points = 50;
   unsigned seed = 1, threads = 0;
   double support_override = 0, radius_override = -1;
-  if(argc % 2 == 0) { // --help, or an option without its value
-    std::cerr << "usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,...] [--variants whole,cut,delete20,...]\n"
-                 "       [--descriptors gsc,gsi,hks,wks,sihks,si] [--points N] [--seed S] [--threads T] [--support F] [--agd-radius F]\n";
-    return std::string(argv[argc - 1]) == "--help" ? 0 : 2;
-  }
-  for(int i = 1; i + 1 < argc; i += 2) {
-    const std::string k = argv[i], v = argv[i + 1];
-    if(k == "--data") data = v;
-    else if(k == "--output") out = v;
-    else if(k == "--pairs") pairs = v;
-    else if(k == "--variants") variants = v;
-    else if(k == "--descriptors") descriptors = v;
-    else if(k == "--points") n_points = std::stoul(v);
-    else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
-    else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
-    else if(k == "--support") support_override = std::stod(v);
-    else if(k == "--agd-radius") radius_override = std::stod(v);
-    else {
-      std::cerr << "evaluate_geodesic_descriptors: unknown option " << k << "\n";
-      return 2;
-    }
-  }
+  const int code = eval::parse_options(argc, argv, "evaluate_geodesic_descriptors",
+      "[--data DIR] [--output DIR] [--pairs a:b,...] [--variants whole,cut,delete20,...]\n"
+      "       [--descriptors gsc,gsi,hks,wks,sihks,si] [--points N] [--seed S] [--threads T] [--support F] [--agd-radius F]",
+      [&](const std::string& k, const std::string& v) {
+        if(k == "--data") data = v;
+        else if(k == "--output") out = v;
+        else if(k == "--pairs") pairs = v;
+        else if(k == "--variants") variants = v;
+        else if(k == "--descriptors") descriptors = v;
+        else if(k == "--points") n_points = std::stoul(v);
+        else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
+        else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
+        else if(k == "--support") support_override = std::stod(v);
+        else if(k == "--agd-radius") radius_override = std::stod(v);
+        else return false;
+        return true;
+      });
+  if(code >= 0) return code;
   try {
-    std::ifstream probe(data + "/README.md");
-    if(!probe) {
-      std::cerr << "evaluate_geodesic_descriptors: no evaluation data at " << data << " (give --data DIR)\n";
-      return 1;
-    }
+    if(!eval::has_evaluation_data("evaluate_geodesic_descriptors", data)) return 1;
     std::system(("mkdir -p '" + out + "'").c_str());
     const std::string tosca = data + "/tosca5k/";
     std::ofstream json(out + "/summary.json");
@@ -437,14 +423,14 @@ int main(int argc, char** argv) {
              << ", \"agd_radius\": " << c.radius;
         first_case = false;
         for(const auto& r : rs) {
-          json << ",\n      \"" << r.label << "\": {\"hit_rate_k1\": " << json_number(r.curves.hit_rate[0]) << ", \"hit_rate_1pct\": "
-               << json_number(r.curves.hit_rate_at_percent(1.0)) << ", \"geodesic_error_k1\": " << json_number(r.curves.geodesic_error[0])
-               << ", \"geodesic_error_1pct\": " << json_number(r.curves.geodesic_error_at_percent(1.0));
+          json << ",\n      \"" << r.label << "\": {\"hit_rate_k1\": " << eval::json_number(r.curves.hit_rate[0]) << ", \"hit_rate_1pct\": "
+               << eval::json_number(r.curves.hit_rate_at_percent(1.0)) << ", \"geodesic_error_k1\": " << eval::json_number(r.curves.geodesic_error[0])
+               << ", \"geodesic_error_1pct\": " << eval::json_number(r.curves.geodesic_error_at_percent(1.0));
           if(!r.curves.hit_rate_symmetric.empty())
-            json << ", \"hit_rate_k1_sym\": " << json_number(r.curves.hit_rate_symmetric[0]) << ", \"hit_rate_1pct_sym\": "
-                 << json_number(r.curves.hit_rate_symmetric[r.curves.k_of_percent(1.0) - 1]) << ", \"geodesic_error_k1_sym\": "
-                 << json_number(r.curves.geodesic_error_symmetric[0]);
-          json << ", \"seconds\": " << json_number(r.seconds) << "}";
+            json << ", \"hit_rate_k1_sym\": " << eval::json_number(r.curves.hit_rate_symmetric[0]) << ", \"hit_rate_1pct_sym\": "
+                 << eval::json_number(r.curves.hit_rate_symmetric[r.curves.k_of_percent(1.0) - 1]) << ", \"geodesic_error_k1_sym\": "
+                 << eval::json_number(r.curves.geodesic_error_symmetric[0]);
+          json << ", \"seconds\": " << eval::json_number(r.seconds) << "}";
         }
         json << "}";
         json.flush();

@@ -16,6 +16,7 @@
 //
 // Usage: evaluate_rigid_descriptors [--data DIR] [--output DIR] [--points N] [--seed S]
 //                                   [--experiments NAME,...] [--threads T]
+#include "program.h"
 #include "plot.h"
 
 #include <shapecorr/descriptors.h>
@@ -322,42 +323,27 @@ Mesh cut_part(const Mesh& m, Mesh::Vertex_index centre, double radius) {
   return part;
 }
 
-std::string json_number(double x) {
-  std::ostringstream o;
-  o.precision(6);
-  o << (std::isfinite(x) ? x : 0.0);
-  return o.str();
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
   std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/rigid", only;
   std::size_t n_points = 1000;
   unsigned seed = 1, threads = 0;
-  if(argc % 2 == 0) { // --help, or an option without its value
-    std::cerr << "usage: evaluate_rigid_descriptors [--data DIR] [--output DIR] [--points N] [--seed S] [--experiments a,b,...] [--threads T]\n";
-    return std::string(argv[argc - 1]) == "--help" ? 0 : 2;
-  }
-  for(int i = 1; i + 1 < argc; i += 2) {
-    const std::string k = argv[i], v = argv[i + 1];
-    if(k == "--data") data = v;
-    else if(k == "--output") out = v;
-    else if(k == "--points") n_points = std::stoul(v);
-    else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
-    else if(k == "--experiments") only = "," + v + ",";
-    else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
-    else {
-      std::cerr << "evaluate_rigid_descriptors: unknown option " << k << "\n";
-      return 2;
-    }
-  }
+  const int code = eval::parse_options(argc, argv, "evaluate_rigid_descriptors",
+      "[--data DIR] [--output DIR] [--points N] [--seed S] [--experiments a,b,...] [--threads T]",
+      [&](const std::string& k, const std::string& v) {
+        if(k == "--data") data = v;
+        else if(k == "--output") out = v;
+        else if(k == "--points") n_points = std::stoul(v);
+        else if(k == "--seed") seed = static_cast<unsigned>(std::stoul(v));
+        else if(k == "--experiments") only = "," + v + ",";
+        else if(k == "--threads") threads = static_cast<unsigned>(std::stoul(v));
+        else return false;
+        return true;
+      });
+  if(code >= 0) return code;
   try {
-    std::ifstream probe(data + "/README.md");
-    if(!probe) {
-      std::cerr << "evaluate_rigid_descriptors: no evaluation data at " << data << " (give --data DIR)\n";
-      return 1;
-    }
+    if(!eval::has_evaluation_data("evaluate_rigid_descriptors", data)) return 1;
     std::system(("mkdir -p '" + out + "'").c_str());
     const std::string c = data + "/classic/";
     std::vector<std::function<Experiment()>> makers;
@@ -400,9 +386,9 @@ int main(int argc, char** argv) {
       json << (first_ex ? "" : ",") << "\n    \"" << ex.name << "\": {";
       first_ex = false;
       for(std::size_t k = 0; k < rs.size(); ++k)
-        json << (k ? "," : "") << "\n      \"" << rs[k].label << "\": {\"auc\": " << json_number(rs[k].auc) << ", \"final_recall\": "
-             << json_number(rs[k].final_recall) << ", \"correct\": " << rs[k].correct << ", \"wrong_summed_distance_mr\": "
-             << json_number(rs[k].wrong_distance_mr) << ", \"seconds\": " << json_number(rs[k].seconds) << "}";
+        json << (k ? "," : "") << "\n      \"" << rs[k].label << "\": {\"auc\": " << eval::json_number(rs[k].auc) << ", \"final_recall\": "
+             << eval::json_number(rs[k].final_recall) << ", \"correct\": " << rs[k].correct << ", \"wrong_summed_distance_mr\": "
+             << eval::json_number(rs[k].wrong_distance_mr) << ", \"seconds\": " << eval::json_number(rs[k].seconds) << "}";
       json << "\n    }";
     }
     json << "\n  }\n}\n";
