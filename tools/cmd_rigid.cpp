@@ -50,6 +50,12 @@ std::unique_ptr<shapecorr::Spin_descriptors<Mesh>> make_spin(const Mesh& m, cons
              .central_radius(central).lrf_radius(lrf)));
 }
 
+// The face-based spin image: sampled areas with bilinear splatting, or (--exact-area) the exact
+// area in each bin.
+shapecorr::Spin_image face_image(const shapecorr::Spin_descriptors<Mesh>& sd, const shapecorr::Oriented_point& op, bool exact) {
+  return exact ? sd.exact_face_spin_image(op) : sd.face_spin_image(op);
+}
+
 // The lengths that normalize the Geodesic Spin Contour: when matching, the target's, so that a
 // part of a shape is described with the whole shape's lengths.
 struct Geodesic_norm {
@@ -127,7 +133,7 @@ Descriptor_set compute_set(const Mesh& m, const std::vector<std::size_t>& ids, c
   if(type == "spin-contour")
     s.contours = sd->for_each_point<shapecorr::Spin_contour>(ops, [&](const auto& op) { return sd->spin_contour(op); }, progress);
   else if(type == "face-spin-image")
-    s.images = sd->for_each_point<shapecorr::Spin_image>(ops, [&](const auto& op) { return sd->face_spin_image(op); }, progress);
+    s.images = sd->for_each_point<shapecorr::Spin_image>(ops, [&](const auto& op) { return face_image(*sd, op, a.has("exact-area")); }, progress);
   else
     s.images = sd->for_each_point<shapecorr::Spin_image>(ops, [&](const auto& op) { return sd->spin_image(op); }, progress);
   return s;
@@ -187,11 +193,11 @@ int cmd_rigid_descriptors(const Args& a) {
     if(extension(output) != "png") throw Usage_error("--plot writes a .png picture");
     const auto sd = make_spin(m, a, type, m);
     const auto op = sd->oriented_point(vertex_descriptor(static_cast<Mesh::size_type>(v)));
-    const shapecorr::Spin_image img = type == "spin-image" || type == "improved-spin-image" ? sd->spin_image(op) : sd->face_spin_image(op);
+    const shapecorr::Spin_image img = type == "spin-image" || type == "improved-spin-image" ? sd->spin_image(op) : face_image(*sd, op, a.has("exact-area"));
     const shapecorr::Spin_contour c = sd->spin_contour(op);
     shapecorr::write_spin_descriptor_plot(output, img, c);
     if(!a.has("quiet"))
-      std::cerr << "descriptors: vertex " << v << ", " << (type == "spin-image" || type == "improved-spin-image" ? "spin image" : "face-based spin image")
+      std::cerr << "descriptors: vertex " << v << ", " << (type == "spin-image" || type == "improved-spin-image" ? "spin image" : a.has("exact-area") ? "face-based spin image (exact areas)" : "face-based spin image")
                 << " " << img.rows() << "x" << img.cols() << " and its Spin Contour (" << c.size() << " points)"
                 << (op.fell_back_to_normal ? ", axis fell back to the normal" : "") << " -> " << output << "\n";
     return 0;
@@ -225,6 +231,7 @@ int cmd_match(const Args& a) {
   const std::string type = a.require("descriptor"), output = a.require("output");
   if(!is_rigid(type) && !is_spectral(type) && !is_geodesic(type))
     throw Usage_error("--descriptor must be spin-image, face-spin-image, spin-contour, improved-spin-image, gsc, geodesic-spin-image, hks, wks or sihks");
+  if(a.has("exact-area") && type != "face-spin-image") throw Usage_error("--exact-area applies to --descriptor face-spin-image");
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::size_t> ids;
   if(a.has("source-points")) {

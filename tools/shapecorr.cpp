@@ -41,13 +41,16 @@ usage:
       every vertex to vertex V (FILE.csv: one per line; FILE.ply: mesh coloured by it, V marked).
   shapecorr descriptors MESH --type spin-image|face-spin-image|spin-contour|improved-spin-image
                          [--axis normal|central|local-central|shot] [--support F] [--rows R] [--cols C]
-                         [--central-radius F] [--lrf-radius M] [--vertices V,...] --output FILE.csv
+                         [--central-radius F] [--lrf-radius M] [--exact-area] [--vertices V,...]
+                         --output FILE.csv
       Rigid descriptors (thesis chapter 3) of the listed vertices (default all). Support and
       central radius: fractions of the extent (2 x largest distance from the area centroid;
       defaults 1.0 and 0.1); SHOT frame radius in mean edge lengths (default 30); 120 x 60 samples.
       Images: one row per vertex (id, then rows x cols bins, row-major); contours: vertex,alpha,beta
       rows (normalized by the support). With --plot V --output FILE.png: the spin image (face-based
       for face-spin-image and spin-contour) and the Spin Contour of vertex V side by side.
+      --exact-area: face-based images hold the exact surface area in each bin (Carmichael et
+      al.'s exact method, slower) instead of sampled areas splatted bilinearly.
       With --distance-to V --output FILE.ply|.csv: the descriptor distance of every vertex to V.
   shapecorr descriptors MESH --type gsc|geodesic-spin-image [--support F] [--agd-radius F]
                          [--rows R] [--cols C] [--vertices V,...] --output FILE.csv
@@ -176,6 +179,8 @@ int cmd_agd(const Args& a) {
 
 int cmd_descriptors(const Args& a) {
   const std::string type = a.require("type");
+  if(a.has("exact-area") && type != "face-spin-image" && type != "spin-contour")
+    throw Usage_error("--exact-area applies to face-spin-image (and to the image of a spin-contour plot)");
   if(type == "spin-image" || type == "face-spin-image" || type == "spin-contour" || type == "improved-spin-image" || type == "gsc" ||
      type == "geodesic-spin-image")
     return cmd_rigid_descriptors(a);

@@ -75,6 +75,11 @@ void BM_Reference_FaceSpinImage(benchmark::State& state) {
   per_point(state, [](const auto& sd, const auto& op) { return sd.face_spin_image(op).values()[0]; });
 }
 BENCHMARK(BM_Reference_FaceSpinImage)->Unit(benchmark::kMicrosecond);
+void BM_ExactFaceSpinImage(benchmark::State& state) {
+  per_point(state, [](const auto& sd, const auto& op) { return sd.exact_face_spin_image(op).values().size(); });
+}
+BENCHMARK(BM_ExactFaceSpinImage)->Unit(benchmark::kMicrosecond);
+
 void BM_SpinImage(benchmark::State& state) {
   per_point(state, [](const auto& sd, const auto& op) { return sd.spin_image(op).values()[0]; });
 }

@@ -130,6 +130,63 @@ TEMPLATE_TEST_CASE("Spin Contour of a tube seen from its axis is two vertical li
   CHECK(filled == 21); // beta_r = 1 - (r + 1/2) 2/41 within [-1/2, 1/2]: r = 10 ... 30
 }
 
+// Area of the square [0,2]^2 (z = 0) in bin (row i, column j) of the exact face-based image with
+// P = (1, 1, 0), axis (cos e, 0, sin e), support 2, 40 x 20 bins: beta = cos(e) (x - 1),
+// alpha^2 = sin(e)^2 (x - 1)^2 + (y - 1)^2. Midpoint rule in x over the slab, exact in y.
+double tilted_square_bin_area(double e, int i, int j) {
+  const double top = 2.0 - 0.1 * i, bottom = top - 0.1, c = std::cos(e), s = std::sin(e);
+  const double x0 = std::max(0.0, 1 + bottom / c), x1 = std::min(2.0, 1 + top / c);
+  if(x1 <= x0) return 0.0;
+  auto within = [](double a2, double u2) { return a2 <= u2 ? 0.0 : std::min(1.0, std::sqrt(a2 - u2)); };
+  const int n = 20000;
+  double sum = 0;
+  for(int k = 0; k < n; ++k) {
+    const double x = x0 + (x1 - x0) * (k + 0.5) / n, u2 = (s * (x - 1)) * (s * (x - 1));
+    sum += 2 * (within(0.01 * (j + 1) * (j + 1), u2) - within(0.01 * j * j, u2));
+  }
+  return sum * (x1 - x0) / n;
+}
+
+TEMPLATE_TEST_CASE("exact face-based spin image: areas of annuli, strips and tilted planes", "[descriptors][face-spin-image]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_grid(m, 7, 9, 2.0, 2.0); // [0,2]^2, z = 0, an uneven triangulation
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::support_length(2.0).image_rows(std::size_t(40)).image_columns(std::size_t(20)));
+  SECTION("axis along the normal: the columns are annuli of the square, all in one row") {
+    Oriented_point op;
+    op.point = Eigen::Vector3d(1, 1, -0.013); // beta = 0.013: row 19 (beta in [0, 0.1])
+    op.axis = Eigen::Vector3d::UnitZ();
+    const shapecorr::Spin_image img = sd.exact_face_spin_image(op);
+    double total = 0;
+    for(std::size_t r = 0; r < 40; ++r)
+      for(std::size_t c = 0; c < 20; ++c) {
+        total += img.at(r, c);
+        if(r != 19) CHECK(img.at(r, c) == 0.0f);
+      }
+    CHECK(total == Approx(4.0).epsilon(1e-6));
+    for(std::size_t c = 0; c < 10; ++c) CHECK(img.at(19, c) == Approx(CGAL_PI * 0.01 * (2.0 * c + 1)).epsilon(1e-6));
+    // the corner columns: the square minus the disc of radius 1 spread over alpha in [1, sqrt 2]
+    double corners = 0;
+    for(std::size_t c = 10; c < 15; ++c) corners += img.at(19, c);
+    CHECK(corners == Approx(4.0 - CGAL_PI).epsilon(1e-6));
+  }
+  SECTION("axis in the plane (and tilted by 1e-8, 1e-4 and 0.3 rad): strips and their tilted versions") {
+    for(double e : {0.0, 1e-8, 1e-4, 0.3}) {
+      INFO("tilt " << e);
+      Oriented_point op;
+      op.point = Eigen::Vector3d(1, 1, 0);
+      op.axis = Eigen::Vector3d(std::cos(e), 0, std::sin(e));
+      const shapecorr::Spin_image img = sd.exact_face_spin_image(op);
+      for(int i = 0; i < 40; ++i)
+        for(int j = 0; j < 20; ++j) {
+          const double expected = e == 0.0 ? ((i >= 10 && i < 30 && j < 10) ? 0.02 : 0.0) : tilted_square_bin_area(e, i, j);
+          INFO("bin " << i << ", " << j);
+          CHECK(img.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) == Approx(expected).margin(2e-8).epsilon(1e-5));
+        }
+    }
+  }
+}
+
 TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for every axis", "[descriptors][invariance]",
                    test::Surface_mesh, test::Polyhedron) {
   TestType a, b;
@@ -148,6 +205,7 @@ TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for eve
       CHECK(same_contour(da.spin_contour(pa), db.spin_contour(pb), 1e-5));
       CHECK(image_difference(da.spin_image(pa), db.spin_image(pb)) < 1e-5);
       CHECK(image_difference(da.face_spin_image(pa), db.face_spin_image(pb)) < 1e-5);
+      CHECK(image_difference(da.exact_face_spin_image(pa), db.exact_face_spin_image(pb)) < 1e-5);
     }
   }
 }

@@ -136,6 +136,10 @@ public:
   Spin_image spin_image(const Oriented_point& op) const { return internal::vertex_spin_image(m_geometry, op, m_options); }
   /// The face-based spin image (area-weighted, approximate method of Carmichael et al.).
   Spin_image face_spin_image(const Oriented_point& op) const { return internal::face_spin_image(m_geometry, op, m_options); }
+  /// The face-based spin image, exact method of Carmichael et al.: each bin holds the area of the
+  /// surface inside its volume (between two planes beta = const and two cylinders alpha = const), to
+  /// rounding; no interpolation between bins. Slower than `face_spin_image`.
+  Spin_image exact_face_spin_image(const Oriented_point& op) const { return internal::exact_face_spin_image(m_geometry, op, m_options); }
   /// The Spin Contour (thesis's fast construction), coordinates normalized by the support length.
   Spin_contour spin_contour(const Oriented_point& op) const {
     thread_local internal::Spin_contour_workspace ws;

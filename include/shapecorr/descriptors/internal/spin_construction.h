@@ -112,6 +112,186 @@ inline Spin_image face_spin_image(const Spin_geometry& g, const Oriented_point& 
   return img;
 }
 
+// Signed area of the triangle (0, p, q) inside the disc of radius r centred at the origin (the
+// pieces of the segment outside the disc contribute circular sectors).
+inline double origin_triangle_in_disc(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double r) {
+  auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  auto sector = [&](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return 0.5 * r * r * std::atan2(cross(u, v), u.dot(v)); };
+  const Eigen::Vector2d d = q - p;
+  const double A = d.squaredNorm();
+  if(!(A > 0)) return 0.0;
+  const double B = p.dot(d), C = p.squaredNorm() - r * r;
+  const double disc = B * B - A * C;
+  if(disc <= 0) return sector(p, q); // the line misses the disc
+  const double sq = std::sqrt(disc);
+  const double t1 = (-B - sq) / A, t2 = (-B + sq) / A;
+  if(t2 <= 0 || t1 >= 1) return sector(p, q); // the segment lies outside
+  const Eigen::Vector2d a = t1 > 0 ? Eigen::Vector2d(p + t1 * d) : p, b = t2 < 1 ? Eigen::Vector2d(p + t2 * d) : q;
+  return (t1 > 0 ? sector(p, a) : 0.0) + 0.5 * cross(a, b) + (t2 < 1 ? sector(b, q) : 0.0);
+}
+
+inline double signed_polygon_area_2(const Eigen::Vector2d* v, int n) {
+  double a = 0;
+  for(int k = 0; k < n; ++k) {
+    const Eigen::Vector2d& p = v[k];
+    const Eigen::Vector2d& q = v[(k + 1) % n];
+    a += p.x() * q.y() - p.y() * q.x();
+  }
+  return 0.5 * a;
+}
+
+// Clips the convex polygon (v, n) to the half-plane f(x) >= 0, f given at the vertices; returns the
+// new number of vertices (at most n + 1; out must not alias v).
+inline int clip_polygon(const Eigen::Vector2d* v, const double* f, int n, Eigen::Vector2d* out, double* fout, const double* g, double* gout) {
+  int m = 0;
+  for(int k = 0; k < n; ++k) {
+    const int k2 = (k + 1) % n;
+    if(f[k] >= 0) {
+      out[m] = v[k];
+      fout[m] = f[k];
+      gout[m++] = g[k];
+    }
+    if((f[k] >= 0) != (f[k2] >= 0)) {
+      const double c = f[k] / (f[k] - f[k2]);
+      out[m] = v[k] + c * (v[k2] - v[k]);
+      fout[m] = 0;
+      gout[m++] = g[k] + c * (g[k2] - g[k]);
+    }
+  }
+  return m;
+}
+
+/// The face-based spin image, exact method (Carmichael et al. 1999): bin (row i, column j) holds
+/// the area of the surface inside the volume between the planes beta = beta_i, beta_{i+1} and the
+/// cylinders alpha = alpha_j, alpha_{j+1} (box bins, no interpolation). In a triangle's plane, with
+/// e1 along the axis's projection, e2 = N x e1, s, t the coordinates and h the plane's offset from P,
+/// alpha^2 = (nu s - sigma mu h)^2 + t^2 (nu = |n.N|, mu = sqrt(1 - nu^2), sigma = sign(n.N)):
+/// {alpha <= a} is an ellipse that the map (s, t) -> (nu s - sigma mu h, t) turns into the disc of
+/// radius a (areas times nu). Each triangle is clipped to the rows' slabs (beta is linear in it)
+/// and the area of each piece inside the discs of the column boundaries is summed edge by edge
+/// (triangle with the origin, inside a disc). Faces within 1e-6 of parallel to the axis (nu <
+/// 1e-6) use the limit nu = 0: the strip |t| <= sqrt(a^2 - h^2).
+inline Spin_image exact_face_spin_image(const Spin_geometry& g, const Oriented_point& op, const Spin_options& o) {
+  Spin_image img(o.rows, o.cols, o.support);
+  const double L = o.support;
+  const double row_h = 2.0 * L / static_cast<double>(o.rows), col_w = L / static_cast<double>(o.cols);
+  const long R = static_cast<long>(o.rows), C = static_cast<long>(o.cols);
+  const std::size_t m = g.a.number_of_faces();
+  std::vector<double> cum(static_cast<std::size_t>(C) + 1);
+  for_each_candidate(g.face_tree, m, op.point, std::sqrt(2.0) * L + g.max_face_radius, g.bbox_diagonal, [&](std::size_t f) {
+    const Eigen::Index fi = static_cast<Eigen::Index>(f);
+    if(!(g.face_area[fi] > 0)) return;
+    const Eigen::Vector3d N = g.face_normal.row(fi);
+    if(o.cos_support_angle > -1 && N.dot(op.axis) < o.cos_support_angle) return;
+    const Eigen::Vector3d p[3] = {g.a.V.row(g.a.F(fi, 0)), g.a.V.row(g.a.F(fi, 1)), g.a.V.row(g.a.F(fi, 2))};
+    double beta[3];
+    for(int k = 0; k < 3; ++k) beta[k] = op.axis.dot(p[k] - op.point);
+    const double bmin = std::min({beta[0], beta[1], beta[2]}), bmax = std::max({beta[0], beta[1], beta[2]});
+    if(bmin >= L || bmax <= -L) return;
+    // the in-plane frame
+    const double nN = op.axis.dot(N);
+    const double nu = std::min(1.0, std::abs(nN)), mu = std::sqrt(std::max(0.0, 1.0 - nu * nu));
+    Eigen::Vector3d e1 = op.axis - nN * N;
+    if(e1.norm() > 1e-300) e1.normalize();
+    else e1 = N.unitOrthogonal();
+    const Eigen::Vector3d e2 = N.cross(e1);
+    const double h = N.dot(p[0] - op.point), x0 = -(nN < 0 ? -1.0 : 1.0) * mu * h;
+    const bool strip = nu < 1e-6;
+    Eigen::Vector2d tri[3];
+    for(int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d w = p[k] - op.point;
+      tri[k] = {e1.dot(w), e2.dot(w)};
+    }
+    // rows (slabs) the triangle spans: row i covers beta in [L - (i + 1) row_h, L - i row_h]
+    const long i0 = std::max(0L, static_cast<long>(std::floor((L - bmax) / row_h)));
+    const long i1 = std::min(R - 1, static_cast<long>(std::floor((L - bmin) / row_h)));
+    for(long i = i0; i <= i1; ++i) {
+      const double top = L - static_cast<double>(i) * row_h, bottom = top - row_h;
+      Eigen::Vector2d q1[4], q2[5];
+      double f1[4], f2[5], b1[4], b2[5];
+      double ftop[3], bb[3];
+      for(int k = 0; k < 3; ++k) {
+        ftop[k] = top - beta[k];
+        bb[k] = beta[k];
+      }
+      const int n1 = clip_polygon(tri, ftop, 3, q1, f1, bb, b1);
+      if(n1 < 3) continue;
+      for(int k = 0; k < n1; ++k) f1[k] = b1[k] - bottom;
+      const int n2 = clip_polygon(q1, f1, n1, q2, f2, b1, b2);
+      if(n2 < 3) continue;
+      // the piece in disc coordinates (X, Y) = (nu s + x0, t); its area in the plane
+      Eigen::Vector2d d[5];
+      double r2max = 0, r2min = std::numeric_limits<double>::infinity();
+      for(int k = 0; k < n2; ++k) {
+        d[k] = {(strip ? 0.0 : nu * q2[k].x()) + x0, q2[k].y()};
+        r2max = std::max(r2max, d[k].squaredNorm());
+      }
+      const double signed_area = signed_polygon_area_2(q2, n2), area = std::abs(signed_area);
+      if(!(area > 0)) continue;
+      const double sign = signed_area > 0 ? 1.0 : -1.0;
+      // the smallest alpha on the piece: in the strip limit from its t range; else 0 when the
+      // piece contains the disc's centre, the distance to its nearest edge otherwise
+      if(strip) {
+        double tlo = std::numeric_limits<double>::infinity(), thi = -tlo;
+        for(int k = 0; k < n2; ++k) {
+          tlo = std::min(tlo, q2[k].y());
+          thi = std::max(thi, q2[k].y());
+        }
+        r2min = x0 * x0 + (tlo > 0 ? tlo * tlo : (thi < 0 ? thi * thi : 0.0));
+      } else {
+        bool inside = true;
+        for(int k = 0; k < n2; ++k) {
+          const Eigen::Vector2d& a = d[k];
+          const Eigen::Vector2d e = d[(k + 1) % n2] - a;
+          if(sign * (a.x() * e.y() - a.y() * e.x()) < 0) inside = false;
+          const double len2 = e.squaredNorm();
+          const double t = len2 > 0 ? std::min(1.0, std::max(0.0, -a.dot(e) / len2)) : 0.0;
+          r2min = std::min(r2min, (a + t * e).squaredNorm());
+        }
+        if(inside) r2min = 0;
+      }
+      const long j0 = std::max(0L, static_cast<long>(std::floor(std::sqrt(r2min) / col_w)));
+      if(j0 >= C) continue;
+      const long j1 = std::min(C, static_cast<long>(std::ceil(std::sqrt(r2max) / col_w)));
+      // cum[j]: the piece's area within alpha <= j col_w, for j0 <= j <= j1
+      cum[static_cast<std::size_t>(j0)] = 0;
+      for(long j = j0 + 1; j <= j1; ++j) {
+        const double a = static_cast<double>(j) * col_w;
+        double in;
+        if(a * a >= r2max) in = area;
+        else if(strip) {
+          // the strip |t| <= w clips the piece: two half-planes
+          const double w2 = a * a - x0 * x0;
+          if(w2 <= 0) in = 0;
+          else {
+            const double w = std::sqrt(w2);
+            Eigen::Vector2d c1[6], c2[7];
+            double g1[6], g2[7], z1[6], z2[7], fa[5], za[5];
+            for(int k = 0; k < n2; ++k) {
+              fa[k] = w - q2[k].y();
+              za[k] = 0;
+            }
+            const int m1 = clip_polygon(q2, fa, n2, c1, g1, za, z1);
+            for(int k = 0; k < m1; ++k) g1[k] = c1[k].y() + w;
+            const int m2 = m1 >= 3 ? clip_polygon(c1, g1, m1, c2, g2, z1, z2) : 0;
+            in = m2 >= 3 ? std::abs(signed_polygon_area_2(c2, m2)) : 0.0;
+          }
+        } else {
+          double s = 0;
+          for(int k = 0; k < n2; ++k) s += origin_triangle_in_disc(d[k], d[(k + 1) % n2], a);
+          in = std::min(area, std::max(0.0, sign * s / nu));
+        }
+        cum[static_cast<std::size_t>(j)] = in;
+      }
+      for(long j = j0; j < std::min(j1, C); ++j) {
+        const double v = cum[static_cast<std::size_t>(j + 1)] - cum[static_cast<std::size_t>(j)];
+        if(v > 0) img.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) += static_cast<float>(v);
+      }
+    }
+  });
+  return img;
+}
+
 
 // The section policy of the Spin Contour (see build_level_set_contour): a vertex is its 2-D
 // offset from the axis and its row coordinate; on a plane beta = const both are linear along an
