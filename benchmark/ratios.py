@@ -69,6 +69,9 @@ fsi = runs.get("BM_Reference_FaceSpinImage")
 if sc and fsi:
     print(f"Spin Contour: {ms(sc)*1e3:.0f} us ({sc['mean_points']:.0f} points); face-based spin image: {ms(fsi)*1e3:.0f} us "
           f"-> contour {ms(fsi)/ms(sc):.1f}x faster")
+fx = runs.get("BM_ExactFaceSpinImage")
+if fx and fsi:
+    print(f"exact face-based spin image: {ms(fx)*1e3:.0f} us ({ms(fx)/ms(fsi):.2f}x the sampled one)")
 si = runs.get("BM_SpinImage")
 if si:
     print(f"spin image (vertices): {ms(si)*1e3:.0f} us")

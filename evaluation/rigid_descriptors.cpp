@@ -1,7 +1,7 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The thesis's rigid-descriptor protocol (ALGORITHMS.md, chapter 3): recall vs 1-precision of
-// SI, FSI-fn, FSI-cd, SC-fn, SC-cd, ISI, and (when built with PCL) PCL's SHOT352 and spin image,
+// SI, FSI-fn, FSI-cd, FSIx-cd (exact areas), SC-fn, SC-cd, ISI, and (when built with PCL) PCL's SHOT352 and spin image,
 // on real data from ../shared/data, in one run.
 //
 // For each experiment: N random points uniform on the source surface (seeded), their closest
@@ -253,10 +253,13 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
     std::cerr << "  " << ex.name << " " << label << ": final recall " << r.final_recall << ", AUC " << r.auc << " (" << r.seconds << " s)\n";
     results.push_back(r);
   };
-  auto images = [&](Spin_axis axis, bool face) {
+  // face: 0 the vertex spin image, 1 the face-based image (sampled areas), 2 the exact areas
+  auto images = [&](Spin_axis axis, int face) {
     return [&, axis, face] {
       auto f = [&](const shapecorr::Spin_descriptors<Mesh>& d) {
-        return [&d, face](const shapecorr::Oriented_point& op) { return face ? d.face_spin_image(op) : d.spin_image(op); };
+        return [&d, face](const shapecorr::Oriented_point& op) {
+          return face == 2 ? d.exact_face_spin_image(op) : face == 1 ? d.face_spin_image(op) : d.spin_image(op);
+        };
       };
       const auto a = at_points<shapecorr::Spin_image>(ds, src, axis, f(ds));
       const auto b = at_points<shapecorr::Spin_image>(dt, tgt, axis, f(dt));
@@ -270,12 +273,13 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
       return shapecorr::match_descriptors(a, b, shapecorr::Contour_l1_distance(), threads);
     };
   };
-  timed("SI", images(Spin_axis::NORMAL, false));
-  timed("FSI-fn", images(Spin_axis::NORMAL, true));
-  timed("FSI-cd", images(cd, true));
+  timed("SI", images(Spin_axis::NORMAL, 0));
+  timed("FSI-fn", images(Spin_axis::NORMAL, 1));
+  timed("FSI-cd", images(cd, 1));
+  timed("FSIx-cd", images(cd, 2));
   timed("SC-fn", contours(Spin_axis::NORMAL));
   timed("SC-cd", contours(cd));
-  timed("ISI", images(Spin_axis::SHOT_LRF, false));
+  timed("ISI", images(Spin_axis::SHOT_LRF, 0));
 #ifdef SHAPECORR_WITH_PCL
   const Pcl_cloud cs = pcl_cloud(ex.source, ds, src), ct = pcl_cloud(ex.target, dt, tgt);
   auto l2 = [](const Eigen::VectorXf& a, const Eigen::VectorXf& b) { return static_cast<double>((a - b).norm()); };
