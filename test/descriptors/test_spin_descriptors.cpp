@@ -353,6 +353,18 @@ TEMPLATE_TEST_CASE("matching descriptors of a moved copy finds every vertex itse
   correct = 0;
   for(const auto& mt : shapecorr::match_descriptors(ja, jb, shapecorr::Spin_image_distance())) correct += mt.target == 7 * mt.source;
   CHECK(correct == ja.size());
+  // And through the exact-area images, whose property-map form equals the member function.
+  shapecorr::compute_exact_face_spin_images(a, vertices(a), ia, np);
+  shapecorr::compute_exact_face_spin_images(b, vertices(b), ib, np);
+  ja.clear();
+  jb.clear();
+  for(std::size_t i = 0; i < va.size(); i += 7) ja.push_back(get(ia, va[i]));
+  for(auto v : vb) jb.push_back(get(ib, v));
+  const shapecorr::Spin_descriptors<TestType> sda(a, np);
+  CHECK(ja[3].values() == sda.exact_face_spin_image(sda.oriented_point(va[21])).values());
+  correct = 0;
+  for(const auto& mt : shapecorr::match_descriptors(ja, jb, shapecorr::Spin_image_distance())) correct += mt.target == 7 * mt.source;
+  CHECK(correct == ja.size());
 }
 
 TEST_CASE("spin image comparison: correlation of proportional images is 1, similarity ranks", "[descriptors][spin-image]") {

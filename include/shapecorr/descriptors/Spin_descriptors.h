@@ -215,6 +215,16 @@ void compute_face_spin_images(const TriangleMesh& tm, const VertexRange& vertice
 }
 
 /// \ingroup PkgShapeCorrDescriptors
+/// Face-based spin images with exact areas (`Spin_descriptors::exact_face_spin_image`) of the
+/// vertices of `vertices`, as `compute_spin_images`.
+template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
+void compute_exact_face_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
+                                    const NamedParameters& np = CGAL::parameters::default_values()) {
+  internal::compute_for_vertices<Spin_image>(tm, vertices, images, np,
+                                             [](const auto& sd, const Oriented_point& op) { return sd.exact_face_spin_image(op); });
+}
+
+/// \ingroup PkgShapeCorrDescriptors
 /// Spin Contours (thesis chapter 3) of the vertices of `vertices`, written into `contours` (a
 /// `WritablePropertyMap` from `vertex_descriptor` to `Spin_contour`); compare them with
 /// `contour_l1_distance`.
