@@ -187,6 +187,33 @@ TEMPLATE_TEST_CASE("exact face-based spin image: areas of annuli, strips and til
   }
 }
 
+TEMPLATE_TEST_CASE("exact face-based image and Spin Contour agree: every contour point lies in a bin of positive area",
+                   "[descriptors][face-spin-image]", test::Surface_mesh, test::Polyhedron) {
+  // Two independent constructions: a contour point (alpha, beta_r) is a surface point on the row's
+  // centre plane, so the surface has positive area in its bin (row r, column floor(alpha / w)).
+  TestType m;
+  make_bumpy_sphere(m, 3);
+  const std::size_t R = 40, C = 20;
+  for(Spin_axis axis : {Spin_axis::NORMAL, Spin_axis::CENTRAL_DIRECTION}) {
+    const shapecorr::Spin_descriptors<TestType> sd(m, SP::spin_axis(axis).support_length(1.5).image_rows(R).image_columns(C));
+    for(std::size_t i : {0u, 17u, 200u, 411u}) {
+      const Oriented_point op = sd.oriented_point(vertex_at(m, i));
+      const shapecorr::Spin_contour c = sd.spin_contour(op);
+      const shapecorr::Spin_image img = sd.exact_face_spin_image(op);
+      std::size_t checked = 0;
+      for(std::size_t r = 0; r < R; ++r)
+        for(std::size_t k = c.row_begin(r); k < c.row_end(r); ++k) {
+          const double x = c.alphas()[k] * static_cast<double>(C); // in columns
+          if(std::abs(x - std::round(x)) < 1e-4 || x >= static_cast<double>(C)) continue; // on a column border
+          INFO("vertex " << i << ", row " << r << ", alpha " << c.alphas()[k]);
+          CHECK(img.at(r, static_cast<std::size_t>(x)) > 0.0f);
+          ++checked;
+        }
+      CHECK(checked > 20);
+    }
+  }
+}
+
 TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for every axis", "[descriptors][invariance]",
                    test::Surface_mesh, test::Polyhedron) {
   TestType a, b;
