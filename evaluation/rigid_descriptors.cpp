@@ -253,12 +253,12 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
     std::cerr << "  " << ex.name << " " << label << ": final recall " << r.final_recall << ", AUC " << r.auc << " (" << r.seconds << " s)\n";
     results.push_back(r);
   };
-  // face: 0 the vertex spin image, 1 the face-based image (sampled areas), 2 the exact areas
-  auto images = [&](Spin_axis axis, int face) {
-    return [&, axis, face] {
+  enum class Image { VERTICES, FACES_SAMPLED, FACES_EXACT };
+  auto images = [&](Spin_axis axis, Image kind) {
+    return [&, axis, kind] {
       auto f = [&](const shapecorr::Spin_descriptors<Mesh>& d) {
-        return [&d, face](const shapecorr::Oriented_point& op) {
-          return face == 2 ? d.exact_face_spin_image(op) : face == 1 ? d.face_spin_image(op) : d.spin_image(op);
+        return [&d, kind](const shapecorr::Oriented_point& op) {
+          return kind == Image::FACES_EXACT ? d.exact_face_spin_image(op) : kind == Image::FACES_SAMPLED ? d.face_spin_image(op) : d.spin_image(op);
         };
       };
       const auto a = at_points<shapecorr::Spin_image>(ds, src, axis, f(ds));
@@ -273,13 +273,13 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
       return shapecorr::match_descriptors(a, b, shapecorr::Contour_l1_distance(), threads);
     };
   };
-  timed("SI", images(Spin_axis::NORMAL, 0));
-  timed("FSI-fn", images(Spin_axis::NORMAL, 1));
-  timed("FSI-cd", images(cd, 1));
-  timed("FSIx-cd", images(cd, 2));
+  timed("SI", images(Spin_axis::NORMAL, Image::VERTICES));
+  timed("FSI-fn", images(Spin_axis::NORMAL, Image::FACES_SAMPLED));
+  timed("FSI-cd", images(cd, Image::FACES_SAMPLED));
+  timed("FSIx-cd", images(cd, Image::FACES_EXACT));
   timed("SC-fn", contours(Spin_axis::NORMAL));
   timed("SC-cd", contours(cd));
-  timed("ISI", images(Spin_axis::SHOT_LRF, 0));
+  timed("ISI", images(Spin_axis::SHOT_LRF, Image::VERTICES));
 #ifdef SHAPECORR_WITH_PCL
   const Pcl_cloud cs = pcl_cloud(ex.source, ds, src), ct = pcl_cloud(ex.target, dt, tgt);
   auto l2 = [](const Eigen::VectorXf& a, const Eigen::VectorXf& b) { return static_cast<double>((a - b).norm()); };

@@ -140,23 +140,17 @@ inline double signed_polygon_area_2(const Eigen::Vector2d* v, int n) {
   return 0.5 * a;
 }
 
-// Clips the convex polygon (v, n) to the half-plane f(x) >= 0, f given at the vertices; returns the
+// Clips the convex polygon (v, n), n <= 7, to the half-plane f(x) >= 0 (f affine); returns the
 // new number of vertices (at most n + 1; out must not alias v).
-inline int clip_polygon(const Eigen::Vector2d* v, const double* f, int n, Eigen::Vector2d* out, double* fout, const double* g, double* gout) {
+template <typename F>
+int clip_polygon(const Eigen::Vector2d* v, int n, F&& f, Eigen::Vector2d* out) {
+  double fv[7];
+  for(int k = 0; k < n; ++k) fv[k] = f(v[k]);
   int m = 0;
   for(int k = 0; k < n; ++k) {
     const int k2 = (k + 1) % n;
-    if(f[k] >= 0) {
-      out[m] = v[k];
-      fout[m] = f[k];
-      gout[m++] = g[k];
-    }
-    if((f[k] >= 0) != (f[k2] >= 0)) {
-      const double c = f[k] / (f[k] - f[k2]);
-      out[m] = v[k] + c * (v[k2] - v[k]);
-      fout[m] = 0;
-      gout[m++] = g[k] + c * (g[k2] - g[k]);
-    }
+    if(fv[k] >= 0) out[m++] = v[k];
+    if((fv[k] >= 0) != (fv[k2] >= 0)) out[m++] = v[k] + fv[k] / (fv[k] - fv[k2]) * (v[k2] - v[k]);
   }
   return m;
 }
@@ -197,6 +191,9 @@ inline Spin_image exact_face_spin_image(const Spin_geometry& g, const Oriented_p
     const Eigen::Vector3d e2 = N.cross(e1);
     const double h = N.dot(p[0] - op.point), x0 = -(nN < 0 ? -1.0 : 1.0) * mu * h;
     const bool strip = nu < 1e-6;
+    // beta on the plane: (n . e1) s + (n . N) h (n has no e2 component)
+    const double ne1 = op.axis.dot(e1), beta0 = nN * h;
+    auto beta_at = [&](const Eigen::Vector2d& q) { return ne1 * q.x() + beta0; };
     Eigen::Vector2d tri[3];
     for(int k = 0; k < 3; ++k) {
       const Eigen::Vector3d w = p[k] - op.point;
@@ -208,16 +205,9 @@ inline Spin_image exact_face_spin_image(const Spin_geometry& g, const Oriented_p
     for(long i = i0; i <= i1; ++i) {
       const double top = L - static_cast<double>(i) * row_h, bottom = top - row_h;
       Eigen::Vector2d q1[4], q2[5];
-      double f1[4], f2[5], b1[4], b2[5];
-      double ftop[3], bb[3];
-      for(int k = 0; k < 3; ++k) {
-        ftop[k] = top - beta[k];
-        bb[k] = beta[k];
-      }
-      const int n1 = clip_polygon(tri, ftop, 3, q1, f1, bb, b1);
+      const int n1 = clip_polygon(tri, 3, [&](const Eigen::Vector2d& q) { return top - beta_at(q); }, q1);
       if(n1 < 3) continue;
-      for(int k = 0; k < n1; ++k) f1[k] = b1[k] - bottom;
-      const int n2 = clip_polygon(q1, f1, n1, q2, f2, b1, b2);
+      const int n2 = clip_polygon(q1, n1, [&](const Eigen::Vector2d& q) { return beta_at(q) - bottom; }, q2);
       if(n2 < 3) continue;
       // the piece in disc coordinates (X, Y) = (nu s + x0, t); its area in the plane
       Eigen::Vector2d d[5];
@@ -266,14 +256,8 @@ inline Spin_image exact_face_spin_image(const Spin_geometry& g, const Oriented_p
           else {
             const double w = std::sqrt(w2);
             Eigen::Vector2d c1[6], c2[7];
-            double g1[6], g2[7], z1[6], z2[7], fa[5], za[5];
-            for(int k = 0; k < n2; ++k) {
-              fa[k] = w - q2[k].y();
-              za[k] = 0;
-            }
-            const int m1 = clip_polygon(q2, fa, n2, c1, g1, za, z1);
-            for(int k = 0; k < m1; ++k) g1[k] = c1[k].y() + w;
-            const int m2 = m1 >= 3 ? clip_polygon(c1, g1, m1, c2, g2, z1, z2) : 0;
+            const int m1 = clip_polygon(q2, n2, [w](const Eigen::Vector2d& q) { return w - q.y(); }, c1);
+            const int m2 = m1 >= 3 ? clip_polygon(c1, m1, [w](const Eigen::Vector2d& q) { return q.y() + w; }, c2) : 0;
             in = m2 >= 3 ? std::abs(signed_polygon_area_2(c2, m2)) : 0.0;
           }
         } else {
