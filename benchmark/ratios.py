@@ -82,10 +82,21 @@ if cc and ci:
 ck = runs.get("BM_CompareContours_KdTree")
 if ck and cc:
     print(f"compare two contours with kd-trees: {ms(ck)*1e3:.1f} us ({ms(ck)/ms(cc):.1f}x the row search)")
+cf = runs.get("BM_CompareContours_DistanceField")
+if cf and ci and cc:
+    print(f"compare two prepared contours (distance fields, approximate L1): {ms(cf)*1e3:.2f} us -> {ms(ci)/ms(cf):.1f}x faster than two images, "
+          f"{ms(cc)/ms(cf):.1f}x than the exact L1; largest error {cf['max_abs_error']:.2g} ({100*cf['max_rel_error']:.1f}% relative, bound {cf['error_bound']:.2g}), "
+          f"{cf['field_bytes']/1024:.1f} KB per field")
+cp = runs.get("BM_ContourDistanceField_Prepare")
+if cp and sc:
+    print(f"prepare a distance field: {ms(cp)*1e3:.0f} us ({ms(cp)/ms(sc):.2f}x building the contour)")
+mf = runs.get("BM_MatchDistanceField_PerComparison")
 mc = runs.get("BM_MatchContour_PerComparison")
 mi = runs.get("BM_Reference_MatchImage_PerComparison")
 if mc and mi:
     print(f"matching, per comparison: contour {ms(mc)*1e3/64:.2f} us (early exit), image {ms(mi)*1e3/64:.2f} us -> {ms(mi)/ms(mc):.1f}x")
+if mf and mi:
+    print(f"matching, per comparison: distance fields {ms(mf)*1e3/64:.2f} us (early exit) -> {ms(mi)/ms(mf):.1f}x an image")
 for name in ("BM_PCL_SpinImage", "BM_PCL_SHOT352"):
     p = runs.get(name)
     if p and sc:

@@ -4,8 +4,8 @@
 // direction; 64 vertices spread over the mesh.
 //  - one Spin Contour (fast construction) against one face-based spin image of the same
 //    resolution (the reference) and one vertex spin image;
-//  - comparing two contours (row-merge L1, and the kd-tree L1) against comparing two images
-//    (Johnson & Hebert correlation);
+//  - comparing two contours (row-merge L1, the kd-tree L1, and the approximate L1 of two prepared
+//    distance fields) against comparing two images (Johnson & Hebert correlation);
 //  - with PCL (when built with it): PCL's spin image (153 bins) and SHOT352 for one point.
 #include "../bench_mesh.h"
 
@@ -123,6 +123,38 @@ void BM_Reference_CompareImages(benchmark::State& state) {
 }
 BENCHMARK(BM_Reference_CompareImages)->Unit(benchmark::kMicrosecond);
 
+// The same pairs through the contours' distance fields (approximate L1, prepared once per
+// contour); counters: the largest absolute and relative difference from the exact L1 over all
+// 64 x 64 pairs, and the field's bytes.
+void BM_CompareContours_DistanceField(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::vector<shapecorr::Contour_distance_field> f;
+  for(const auto& c : fx.contours) f.emplace_back(c);
+  double abs_err = 0, rel_err = 0;
+  for(std::size_t a = 0; a < 64; ++a)
+    for(std::size_t b = 0; b < 64; ++b) {
+      const double e = std::abs(shapecorr::approximate_contour_l1_distance(f[a], f[b]) - shapecorr::contour_l1_distance(fx.contours[a], fx.contours[b]));
+      abs_err = std::max(abs_err, e);
+      if(a != b) rel_err = std::max(rel_err, e / shapecorr::contour_l1_distance(fx.contours[a], fx.contours[b]));
+    }
+  std::size_t i = 0;
+  for(auto _ : state) {
+    const auto p = pair_of(i++);
+    benchmark::DoNotOptimize(shapecorr::approximate_contour_l1_distance(f[p.first], f[p.second]));
+  }
+  state.counters["max_abs_error"] = abs_err;
+  state.counters["max_rel_error"] = rel_err;
+  state.counters["error_bound"] = f[0].error_bound();
+  state.counters["field_bytes"] = static_cast<double>(f[0].memory_bytes());
+}
+BENCHMARK(BM_CompareContours_DistanceField)->Unit(benchmark::kMicrosecond);
+void BM_ContourDistanceField_Prepare(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::size_t i = 0;
+  for(auto _ : state) benchmark::DoNotOptimize(shapecorr::Contour_distance_field(fx.contours[i++ % 64]).memory_bytes());
+}
+BENCHMARK(BM_ContourDistanceField_Prepare)->Unit(benchmark::kMicrosecond);
+
 // Matching: one source descriptor (the next of the fixture at each iteration) against the 64 of
 // the fixture (time per comparison); contours use the early exit at the second-best distance.
 void BM_MatchContour_PerComparison(benchmark::State& state) {
@@ -145,6 +177,18 @@ void BM_Reference_MatchImage_PerComparison(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
 }
 BENCHMARK(BM_Reference_MatchImage_PerComparison)->Unit(benchmark::kMicrosecond);
+void BM_MatchDistanceField_PerComparison(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::vector<shapecorr::Contour_distance_field> f;
+  for(const auto& c : fx.contours) f.emplace_back(c);
+  std::size_t i = 0;
+  for(auto _ : state) {
+    const std::vector<shapecorr::Contour_distance_field> one(1, f[i++ % 64]);
+    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, f, shapecorr::Approximate_contour_l1_distance(), 1)[0].target);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+}
+BENCHMARK(BM_MatchDistanceField_PerComparison)->Unit(benchmark::kMicrosecond);
 
 #ifdef SHAPECORR_WITH_PCL
 struct Pcl_fixture {

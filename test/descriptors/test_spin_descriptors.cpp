@@ -392,6 +392,13 @@ TEMPLATE_TEST_CASE("matching descriptors of a moved copy finds every vertex itse
   correct = 0;
   for(const auto& mt : shapecorr::match_descriptors(ja, jb, shapecorr::Spin_image_distance())) correct += mt.target == 7 * mt.source;
   CHECK(correct == ja.size());
+  // And through the contours' distance fields (approximate L1).
+  std::vector<shapecorr::Contour_distance_field> fa, fb;
+  for(const auto& c : sa) fa.emplace_back(c);
+  for(const auto& c : sb) fb.emplace_back(c);
+  correct = 0;
+  for(const auto& mt : shapecorr::match_descriptors(fa, fb, shapecorr::Approximate_contour_l1_distance())) correct += mt.target == 7 * mt.source;
+  CHECK(correct == fa.size());
 }
 
 TEST_CASE("spin image comparison: correlation of proportional images is 1, similarity ranks", "[descriptors][spin-image]") {
@@ -434,4 +441,99 @@ TEST_CASE("contour L1 distance with a bound: exact below it, above it when excee
   CHECK(shapecorr::contour_l1_distance(a, b, 2 * d) == d);
   CHECK(shapecorr::contour_l1_distance(a, b, 0.5 * d) > 0.5 * d);
   CHECK(shapecorr::contour_l1_distance(a, b, 0.0) > 0.0);
+}
+
+namespace {
+// Distance from (alpha, row r) to the nearest point of c, by brute force.
+double brute_distance(const shapecorr::Spin_contour& c, std::size_t r, double alpha) {
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t q = 0; q < c.rows(); ++q)
+    for(std::size_t i = c.row_begin(q); i < c.row_end(q); ++i) {
+      const double da = alpha - c.alphas()[i], db = (static_cast<double>(r) - static_cast<double>(q)) * c.row_spacing();
+      best = std::min(best, std::sqrt(da * da + db * db));
+    }
+  return best;
+}
+} // namespace
+
+TEMPLATE_TEST_CASE("contour distance field: exact samples, approximate L1 within its bound, symmetric", "[descriptors][contour-distance][distance-field]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  make_bumpy_sphere(m, 3);
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
+  std::vector<shapecorr::Spin_contour> c;
+  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  for(std::size_t samples : {121u, 31u, 5u}) {
+    std::vector<shapecorr::Contour_distance_field> f;
+    for(const auto& x : c) f.emplace_back(x, samples);
+    for(std::size_t i = 0; i < c.size(); ++i) {
+      REQUIRE(f[i].alpha_samples() == samples);
+      CHECK(f[i].alpha_min() == 0.0);
+      CHECK(f[i].alpha_max() == 1.0);
+      CHECK(f[i].error_bound() == Approx(0.5 / static_cast<double>(samples - 1)).margin(1e-4));
+      // the samples are the nearest distances (to the 16-bit quantization)
+      for(std::size_t r = 0; r < c[i].rows(); r += 7)
+        for(std::size_t k = 0; k < samples; k += 3)
+          CHECK(f[i].sample(r, k) == Approx(brute_distance(c[i], r, f[i].alpha_min() + static_cast<double>(k) * f[i].sample_spacing())).margin(1e-4));
+      // a contour compared with itself: at most the bound
+      CHECK(shapecorr::approximate_contour_l1_distance(f[i], f[i]) <= f[i].error_bound());
+      for(std::size_t j = 0; j < c.size(); ++j) {
+        const double exact = shapecorr::contour_l1_distance(c[i], c[j]);
+        const double approx = shapecorr::approximate_contour_l1_distance(f[i], f[j]);
+        CHECK(approx == shapecorr::approximate_contour_l1_distance(f[j], f[i]));
+        CHECK(std::abs(approx - exact) <= std::max(f[i].error_bound(), f[j].error_bound()));
+        if(samples == 121u && i != j) CHECK(std::abs(approx - exact) <= 0.05 * exact);
+      }
+    }
+    // interpolated distances of single points lie within the bound too
+    for(std::size_t r = 0; r < c[0].rows(); r += 5)
+      for(double a : {0.013, 0.25, 0.5001, 0.77, 0.999})
+        CHECK(std::abs(f[0].distance(r, a) - brute_distance(c[0], r, a)) <= f[0].error_bound());
+  }
+}
+
+TEST_CASE("contour distance field of hand-made contours: analytic distances, range, bounds and errors", "[descriptors][contour-distance][distance-field]") {
+  // every row holds alpha = 0.3: the distance from (alpha, any row) is |alpha - 0.3|
+  shapecorr::Spin_contour line(10);
+  const std::vector<float> p{0.3f};
+  for(std::size_t r = 0; r < 10; ++r) line.append_row(r, p.begin(), p.end());
+  const shapecorr::Contour_distance_field fl(line, 11);
+  CHECK(fl.sample_spacing() == Approx(0.1));
+  for(std::size_t r = 0; r < 10; ++r) {
+    CHECK(fl.distance(r, 0.8) == Approx(0.5).margin(1e-4));  // a cell away from 0.3: exact
+    CHECK(fl.distance(r, 0.3) == Approx(0.0).margin(1e-4));  // on a sample
+    CHECK(fl.distance(r, 0.35) == Approx(0.05).margin(1e-4)); // between samples 0.3 and 0.4: linear there
+    CHECK(fl.distance(r, 1.5) == Approx(1.2).margin(1e-4));  // outside [0, 1]: the Lipschitz extension
+  }
+  // one point in row 0 at alpha 0.5: straight above it the distance is the row gap
+  shapecorr::Spin_contour dot(10);
+  const std::vector<float> q{0.5f}, none;
+  dot.append_row(0, q.begin(), q.end());
+  for(std::size_t r = 1; r < 10; ++r) dot.append_row(r, none.begin(), none.end());
+  const shapecorr::Contour_distance_field fd(dot, 11);
+  for(std::size_t r = 0; r < 10; ++r) {
+    CHECK(fd.distance(r, 0.5) == Approx(static_cast<double>(r) * dot.row_spacing()).margin(1e-4));
+    CHECK(fd.distance(r, 0.1) == Approx(std::hypot(0.4, static_cast<double>(r) * dot.row_spacing())).margin(1e-4));
+  }
+  // alphas beyond [0, 1] widen the sampled range
+  shapecorr::Spin_contour wide(10);
+  const std::vector<float> w{-0.5f, 1.25f};
+  for(std::size_t r = 0; r < 10; ++r) wide.append_row(r, w.begin(), w.end());
+  const shapecorr::Contour_distance_field fw(wide);
+  CHECK(fw.alpha_min() == Approx(-0.5));
+  CHECK(fw.alpha_max() == Approx(1.25));
+  CHECK(fw.memory_bytes() == 10u * 121u * 2u);
+  // the bound: exact below it, some value above it once exceeded
+  const double d = shapecorr::approximate_contour_l1_distance(fl, fd);
+  REQUIRE(d > 0);
+  CHECK(shapecorr::approximate_contour_l1_distance(fl, fd, 2 * d) == d);
+  CHECK(shapecorr::approximate_contour_l1_distance(fl, fd, 0.5 * d) > 0.5 * d);
+  // empty contours as in contour_l1_distance; mismatched rows and too few samples are typed errors
+  const shapecorr::Contour_distance_field fe(shapecorr::Spin_contour(10));
+  CHECK(shapecorr::approximate_contour_l1_distance(fe, fe) == 0.0);
+  CHECK(std::isinf(shapecorr::approximate_contour_l1_distance(fe, fl)));
+  CHECK(std::isinf(fe.distance(0, 0.5)));
+  CHECK_THROWS_AS(shapecorr::approximate_contour_l1_distance(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12)), fl), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Contour_distance_field(line, 1), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Contour_distance_field(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
 }
