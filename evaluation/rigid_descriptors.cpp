@@ -273,12 +273,24 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
       return shapecorr::match_descriptors(a, b, shapecorr::Contour_l1_distance(), threads);
     };
   };
+  // the same contours compared through their distance fields (approximate L1)
+  auto fields = [&](Spin_axis axis) {
+    return [&, axis] {
+      auto field = [](const shapecorr::Spin_descriptors<Mesh>& d) {
+        return [&d](const shapecorr::Oriented_point& op) { return shapecorr::Contour_distance_field(d.spin_contour(op)); };
+      };
+      const auto a = at_points<shapecorr::Contour_distance_field>(ds, src, axis, field(ds));
+      const auto b = at_points<shapecorr::Contour_distance_field>(dt, tgt, axis, field(dt));
+      return shapecorr::match_descriptors(a, b, shapecorr::Approximate_contour_l1_distance(), threads);
+    };
+  };
   timed("SI", images(Spin_axis::NORMAL, Image::VERTICES));
   timed("FSI-fn", images(Spin_axis::NORMAL, Image::FACES_SAMPLED));
   timed("FSI-cd", images(cd, Image::FACES_SAMPLED));
   timed("FSIx-cd", images(cd, Image::FACES_EXACT));
   timed("SC-fn", contours(Spin_axis::NORMAL));
   timed("SC-cd", contours(cd));
+  timed("SCf-cd", fields(cd));
   timed("ISI", images(Spin_axis::SHOT_LRF, Image::VERTICES));
 #ifdef SHAPECORR_WITH_PCL
   const Pcl_cloud cs = pcl_cloud(ex.source, ds, src), ct = pcl_cloud(ex.target, dt, tgt);

@@ -157,7 +157,7 @@ public:
     auto owner = [&](std::size_t f) { return static_cast<std::size_t>(std::min({m_links[f].v[0], m_links[f].v[1], m_links[f].v[2]})); };
     for(std::size_t f = 0; f < m; ++f) ++m_owned_begin[owner(f) + 1];
     for(std::size_t v = 0; v < n; ++v) m_owned_begin[v + 1] += m_owned_begin[v];
-    m_owned.resize(m);
+    m_owned.assign(m + kOwnedCopy, 0u); // padded: the disc's face list copies kOwnedCopy entries per vertex
     std::vector<std::uint32_t> next(m_owned_begin.begin(), m_owned_begin.end() - 1);
     double longest = 0;
     for(std::size_t f = 0; f < m; ++f) {
@@ -239,7 +239,9 @@ private:
     typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
     Ball ball;
     internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
+    std::vector<std::uint32_t> faces; // the disc's faces
   };
+  static constexpr std::size_t kOwnedCopy = 8;
   static std::uint64_t next_id() {
     static std::atomic<std::uint64_t> counter(0);
     return ++counter;
@@ -255,6 +257,7 @@ private:
     st.owner = m_id;
     const std::size_t n = number_of_vertices();
     st.cws.resize(n);
+    st.faces.assign(m_links.size() + kOwnedCopy, 0u);
     for(std::size_t v = 0; v < n; ++v) unset(st, v);
   }
   void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
@@ -281,11 +284,24 @@ private:
     internal::Geodesic_section sec;
     sec.merge_eps = 1e-12 * m_alpha_scale;
     Spin_contour c(R, m_support, 0.0, 1.0);
+    // Every face an isoline crosses has a corner inside the disc, hence all its corners in the ball
+    // (radius L + the longest edge), its owner among them: the faces owned by the ball's vertices,
+    // each once. Listed without a data-dependent loop per vertex (most own 0 to 4 faces): a fixed
+    // block is copied and the end advances by the count.
+    std::size_t nf = 0;
+    std::uint32_t* faces = st.faces.data();
+    for(const auto& p : ball) {
+      const std::uint32_t b = m_owned_begin[p.first], e = m_owned_begin[p.first + 1];
+      if(nf + kOwnedCopy + (e - b) > st.faces.size()) { // only when the ball lists a vertex twice
+        st.faces.resize(2 * st.faces.size());
+        faces = st.faces.data();
+      }
+      std::copy(m_owned.data() + b, m_owned.data() + b + kOwnedCopy, faces + nf);
+      if(e - b > kOwnedCopy) std::copy(m_owned.data() + b + kOwnedCopy, m_owned.data() + e, faces + nf + kOwnedCopy);
+      nf += e - b;
+    }
     internal::build_level_set_contour(m_links, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
-      // every face an isoline crosses has a corner inside the disc, hence all its corners in the
-      // ball (radius L + the longest edge), its owner among them: each such face once
-      for(const auto& p : ball)
-        for(std::uint32_t k = m_owned_begin[p.first]; k < m_owned_begin[p.first + 1]; ++k) visit(m_owned[k]);
+      for(std::size_t k = 0; k < nf; ++k) visit(faces[k]);
     }, st.cws, c);
     for(const auto& p : ball) unset(st, p.first);
     return c;

@@ -158,11 +158,12 @@ void build_level_set_contour(const std::vector<Face_link>& links, const int* F, 
     const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
     const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
     const int count = std::max(0, hi - lo + 1);
-    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 2) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
+    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 3) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
     auto* o = ws.face_rows.data() + n_rows;
     o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
     o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
-    for(int r = lo + 2; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
+    o[2] = {static_cast<std::uint32_t>(lo + 2), static_cast<std::uint32_t>(f)};
+    for(int r = lo + 3; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
     n_rows += static_cast<std::size_t>(count);
   });
   group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
