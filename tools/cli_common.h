@@ -46,7 +46,7 @@ struct Args {
 };
 
 inline Args parse(int argc, char** argv, int first) {
-  static const std::vector<std::string> flags = {"json", "repair-non-manifold", "help", "quiet", "exact-area"};
+  static const std::vector<std::string> flags = {"json", "repair-non-manifold", "help", "quiet", "exact-area", "distance-fields"};
   Args a;
   for(int i = first; i < argc; ++i) {
     std::string s = argv[i];

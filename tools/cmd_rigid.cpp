@@ -139,7 +139,18 @@ Descriptor_set compute_set(const Mesh& m, const std::vector<std::size_t>& ids, c
   return s;
 }
 
-std::vector<shapecorr::Descriptor_match> match_sets(const Descriptor_set& s, const Descriptor_set& t) {
+// The contours prepared as distance fields (in parallel).
+std::vector<shapecorr::Contour_distance_field> distance_fields(const std::vector<shapecorr::Spin_contour>& c) {
+  std::vector<shapecorr::Contour_distance_field> f(c.size());
+  shapecorr::internal::parallel_for(c.size(), 0, [&](std::size_t i, unsigned) { f[i] = shapecorr::Contour_distance_field(c[i]); });
+  return f;
+}
+
+// Nearest descriptors; contours by the exact L1 distance, or (fields) the approximate one of their
+// distance fields.
+std::vector<shapecorr::Descriptor_match> match_sets(const Descriptor_set& s, const Descriptor_set& t, bool fields) {
+  if(!s.contours.empty() && fields)
+    return shapecorr::match_descriptors(distance_fields(s.contours), distance_fields(t.contours), shapecorr::Approximate_contour_l1_distance());
   if(!s.contours.empty()) return shapecorr::match_descriptors(s.contours, t.contours, shapecorr::Contour_l1_distance());
   if(!s.images.empty()) return shapecorr::match_descriptors(s.images, t.images, shapecorr::Spin_image_distance());
   std::vector<Eigen::VectorXd> a, b;
@@ -232,6 +243,7 @@ int cmd_match(const Args& a) {
   if(!is_rigid(type) && !is_spectral(type) && !is_geodesic(type))
     throw Usage_error("--descriptor must be spin-image, face-spin-image, spin-contour, improved-spin-image, gsc, geodesic-spin-image, hks, wks or sihks");
   if(a.has("exact-area") && type != "face-spin-image") throw Usage_error("--exact-area applies to --descriptor face-spin-image");
+  if(a.has("distance-fields") && type != "spin-contour" && type != "gsc") throw Usage_error("--distance-fields applies to --descriptor spin-contour or gsc");
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::size_t> ids;
   if(a.has("source-points")) {
@@ -255,7 +267,7 @@ int cmd_match(const Args& a) {
   const Descriptor_set t = compute_set(target, all_ids(target.number_of_vertices()), type, a, target, "target descriptors", &norm);
   const Descriptor_set s = compute_set(source, ids, type, a, target, "source descriptors", &norm);
   const auto t1 = std::chrono::steady_clock::now();
-  const std::vector<shapecorr::Descriptor_match> matches = match_sets(s, t);
+  const std::vector<shapecorr::Descriptor_match> matches = match_sets(s, t, a.has("distance-fields"));
   std::ofstream out(output);
   if(!out) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, output + ": cannot open for writing");
   out.precision(9);

@@ -481,6 +481,8 @@ TEMPLATE_TEST_CASE("contour distance field: exact samples, approximate L1 within
         const double exact = shapecorr::contour_l1_distance(c[i], c[j]);
         const double approx = shapecorr::approximate_contour_l1_distance(f[i], f[j]);
         CHECK(approx == shapecorr::approximate_contour_l1_distance(f[j], f[i]));
+        // the same-grid path (precomputed cells) equals the general one (from the alphas)
+        CHECK(f[j].sum_of_distances(f[i]) == Approx(f[j].sum_of_distances(c[i])).epsilon(1e-6));
         CHECK(std::abs(approx - exact) <= std::max(f[i].error_bound(), f[j].error_bound()));
         if(samples == 121u && i != j) CHECK(std::abs(approx - exact) <= 0.05 * exact);
       }
@@ -523,6 +525,13 @@ TEST_CASE("contour distance field of hand-made contours: analytic distances, ran
   CHECK(fw.alpha_min() == Approx(-0.5));
   CHECK(fw.alpha_max() == Approx(1.25));
   CHECK(fw.memory_bytes() == 10u * 121u * 2u);
+  // fields on different grids (ranges or sample counts) compare through the general path
+  const shapecorr::Contour_distance_field fl121(line);
+  for(const auto* g : {&fl, &fl121}) {
+    const double exact = shapecorr::contour_l1_distance(wide, line);
+    CHECK(std::abs(shapecorr::approximate_contour_l1_distance(fw, *g) - exact) <= std::max(fw.error_bound(), g->error_bound()));
+    CHECK(shapecorr::approximate_contour_l1_distance(fw, *g) == shapecorr::approximate_contour_l1_distance(*g, fw));
+  }
   // the bound: exact below it, some value above it once exceeded
   const double d = shapecorr::approximate_contour_l1_distance(fl, fd);
   REQUIRE(d > 0);
