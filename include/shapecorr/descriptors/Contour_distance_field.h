@@ -244,20 +244,8 @@ private:
 /// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
 inline double approximate_contour_l1_distance(const Contour_distance_field& X, const Contour_distance_field& Y,
                                               double bound = std::numeric_limits<double>::infinity()) {
-  const Spin_contour& x = X.contour();
-  const Spin_contour& y = Y.contour();
-  if(x.rows() != y.rows())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(x.rows()) + " and " +
-                                                           std::to_string(y.rows()) + " rows");
-  if(x.beta(0) != y.beta(0) || x.row_spacing() != y.row_spacing())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
-  if(x.empty() || y.empty()) return x.empty() && y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
-  const double total = static_cast<double>(x.size() + y.size());
-  const double limit = bound * total;
-  const double a = Y.sum_of_distances(X, limit);
-  if(a > limit) return a / total;
-  const double b = X.sum_of_distances(Y, limit - a);
-  return (a + b) / total;
+  return internal::symmetric_contour_l1(X.contour(), Y.contour(), bound, [&](double limit) { return Y.sum_of_distances(X, limit); },
+                                        [&](double limit) { return X.sum_of_distances(Y, limit); });
 }
 
 /// \ingroup PkgShapeCorrDescriptors

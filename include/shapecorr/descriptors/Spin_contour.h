@@ -105,6 +105,24 @@ inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y,
   }
   return sum;
 }
+
+// `(a + b) / (|X| + |Y|)` from the directed sums a = `xy(limit)` (the points of X against Y) and
+// b = `yx(limit)`, each returning a value > limit once its sum exceeds it; checks that the
+// contours share their rows; 0 for two empty contours, +infinity when only one is empty.
+template <typename XY, typename YX>
+double symmetric_contour_l1(const Spin_contour& X, const Spin_contour& Y, double bound, XY&& xy, YX&& yx) {
+  if(X.rows() != Y.rows())
+    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
+                                                           std::to_string(Y.rows()) + " rows");
+  if(X.beta(0) != Y.beta(0) || X.row_spacing() != Y.row_spacing())
+    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
+  if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  const double total = static_cast<double>(X.size() + Y.size());
+  const double limit = bound * total;
+  const double a = xy(limit);
+  if(a > limit) return a / total;
+  return (a + yx(limit - a)) / total;
+}
 } // namespace internal
 
 /// \ingroup PkgShapeCorrDescriptors
@@ -119,17 +137,8 @@ inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y,
 /// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
 inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y,
                                   double bound = std::numeric_limits<double>::infinity()) {
-  if(X.rows() != Y.rows())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
-                                                           std::to_string(Y.rows()) + " rows");
-  if(X.beta(0) != Y.beta(0) || X.row_spacing() != Y.row_spacing())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
-  if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
-  const double total = static_cast<double>(X.size() + Y.size());
-  const double limit = bound * total;
-  const double a = internal::directed_contour_sum(X, Y, limit);
-  if(a > limit) return a / total;
-  return (a + internal::directed_contour_sum(Y, X, limit - a)) / total;
+  return internal::symmetric_contour_l1(X, Y, bound, [&](double limit) { return internal::directed_contour_sum(X, Y, limit); },
+                                        [&](double limit) { return internal::directed_contour_sum(Y, X, limit); });
 }
 
 /// \ingroup PkgShapeCorrDescriptors
