@@ -55,17 +55,15 @@ public:
     m_hi = std::max(1.0, static_cast<double>(*range.second));
     m_step = (m_hi - m_lo) / static_cast<double>(m_samples - 1);
     build();
-    // the contour's own points as queries into other fields, in one flat list (no per-row loop in
-    // a comparison): alpha, the row's offset, and the point's cell and fraction on this grid, which
-    // serve every field on the same grid (the common case: alphas in [0, 1])
+    // the contour's own points as queries into other fields on the same grid (the common case:
+    // alphas in [0, 1]), in one flat list: each point's cell and fraction on this grid
     m_query.reserve(contour.size());
     const double cmax = static_cast<double>(m_samples - 1);
     for(std::size_t r = 0; r < contour.rows(); ++r)
       for(std::size_t i = contour.row_begin(r); i < contour.row_end(r); ++i) {
         const double x = std::min(std::max((static_cast<double>(a[i]) - m_lo) / m_step, 0.0), cmax);
         const std::size_t c = static_cast<std::size_t>(std::min(x, cmax - 1.0));
-        m_query.push_back({a[i], static_cast<float>(x - static_cast<double>(c)), static_cast<std::uint32_t>(r * m_samples),
-                           static_cast<std::uint32_t>(r * m_samples + c)});
+        m_query.push_back({static_cast<float>(x - static_cast<double>(c)), static_cast<std::uint32_t>(r * m_samples + c)});
       }
   }
 
@@ -114,46 +112,32 @@ public:
     return m_scale * s + out;
   }
 
-  /// The same sum for the points of another prepared contour (same rows and samples: one
-  /// interpolation per point, no per-row work).
+  /// The same sum for the points of another prepared contour: on the same grid (equal samples
+  /// and alpha range) one lookup and one multiply-add per point from the other's cells and
+  /// fractions, otherwise as for its contour.
   double sum_of_distances(const Contour_distance_field& other, double bound = std::numeric_limits<double>::infinity()) const {
-    if(other.m_samples != m_samples) return sum_of_distances(other.m_contour, bound);
-    if(other.m_contour.empty()) return 0.0;
-    if(m_contour.empty()) return std::numeric_limits<double>::infinity();
-    const double inv = 1.0 / m_step, cmax = static_cast<double>(m_samples - 1);
+    if(other.m_samples != m_samples || other.m_lo != m_lo || other.m_step != m_step || m_contour.empty())
+      return sum_of_distances(other.m_contour, bound);
     const double limit = bound / m_scale;
     const std::uint16_t* field = m_field.data();
     const Query* q = other.m_query.data();
     const std::size_t n = other.m_query.size();
-    if(other.m_lo == m_lo && other.m_step == m_step) { // the same grid: cells and fractions precomputed
-      double s = 0;
-      for(std::size_t i0 = 0; i0 < n; i0 += 32) {
-        const std::size_t i1 = std::min(n, i0 + 32);
-        for(std::size_t i = i0; i < i1; ++i) {
-          const double v0 = field[q[i].cell], v1 = field[q[i].cell + 1];
-          s += v0 + static_cast<double>(q[i].frac) * (v1 - v0);
-        }
-        if(s > limit) break;
-      }
-      return m_scale * s;
-    }
-    double s = 0, out = 0;
+    double s = 0;
     for(std::size_t i0 = 0; i0 < n; i0 += 32) { // the bound is checked every 32 points
       const std::size_t i1 = std::min(n, i0 + 32);
       for(std::size_t i = i0; i < i1; ++i) {
-        const double x = static_cast<double>(q[i].alpha);
-        s += interpolate(field + q[i].row_offset, (x - m_lo) * inv, cmax);
-        out += outside(x);
+        const double v0 = field[q[i].cell], v1 = field[q[i].cell + 1];
+        s += v0 + static_cast<double>(q[i].frac) * (v1 - v0);
       }
-      if(s + out / m_scale > limit) break;
+      if(s > limit) break;
     }
-    return m_scale * s + out;
+    return m_scale * s;
   }
 
 private:
   struct Query {
-    float alpha, frac;
-    std::uint32_t row_offset, cell;
+    float frac;
+    std::uint32_t cell;
   };
   // linear interpolation of a row at fractional sample x, clamped to [0, cmax]
   static double interpolate(const std::uint16_t* row, double x, double cmax) {
