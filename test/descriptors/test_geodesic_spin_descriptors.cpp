@@ -187,6 +187,21 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
     REQUIRE(pts.size() > 10);
     image_contours.push_back(pts);
     fast.push_back(gs.geodesic_spin_contour(vs[p]));
+    // the same from the ball, and from a ball that lists every vertex three times (its faces are
+    // listed three times, more than the mesh has: the list grows)
+    CHECK(gs.geodesic_spin_contour(ball).alphas() == fast.back().alphas());
+    typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball thrice = ball;
+    for(int k = 0; k < 2; ++k) thrice.insert(thrice.end(), ball.begin(), ball.end());
+    std::vector<char> in_ball(vs.size(), 0);
+    for(const auto& b : ball) in_ball[b.first] = 1;
+    std::size_t owned = 0; // faces whose corner of smallest index is in the ball: the disc's face list
+    for(auto f : faces(m)) {
+      std::size_t lo = vs.size();
+      for(auto v : vertices_around_face(halfedge(f, m), m)) lo = std::min(lo, static_cast<std::size_t>(get(vim, v)));
+      owned += in_ball[lo];
+    }
+    REQUIRE(3 * owned > num_faces(m) + 8);
+    CHECK(gs.geodesic_spin_contour(thrice).alphas() == fast.back().alphas());
   }
   for(std::size_t i = 0; i < fast.size(); ++i) {
     const double d = shapecorr::point_set_l1_distance(fast[i].points(), image_contours[i]);
