@@ -544,5 +544,8 @@ TEST_CASE("contour distance field of hand-made contours: analytic distances, ran
   CHECK(std::isinf(fe.distance(0, 0.5)));
   CHECK_THROWS_AS(shapecorr::approximate_contour_l1_distance(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12)), fl), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::Contour_distance_field(line, 1), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(fl.distance(10, 0.5), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Spin_contour(12)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12))), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::Contour_distance_field(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
 }

@@ -84,7 +84,9 @@ public:
 
   /// The distance from the point (alpha, beta of row r) to the contour, interpolated (+infinity
   /// for an empty contour).
+  /// \throws Invalid_input when r is not a row
   double distance(std::size_t r, double alpha) const {
+    if(r >= rows()) throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: row " + std::to_string(r) + " of " + std::to_string(rows()));
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
     const std::uint16_t* row = m_field.data() + r * m_samples;
     const double inv = 1.0 / m_step, cmax = static_cast<double>(m_samples - 1);
@@ -93,7 +95,9 @@ public:
 
   /// The sum over the points of `other` (a contour on the same rows) of their distances to this
   /// contour; stops early, returning a value > `bound`, once the sum exceeds `bound`.
+  /// \throws Invalid_input when the numbers of rows differ
   double sum_of_distances(const Spin_contour& other, double bound = std::numeric_limits<double>::infinity()) const {
+    require_rows(other.rows());
     if(other.empty()) return 0.0;
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
     const float* a = other.alphas().data();
@@ -116,6 +120,7 @@ public:
   /// and alpha range) one lookup and one multiply-add per point from the other's cells and
   /// fractions, otherwise as for its contour.
   double sum_of_distances(const Contour_distance_field& other, double bound = std::numeric_limits<double>::infinity()) const {
+    require_rows(other.rows());
     if(other.m_samples != m_samples || other.m_lo != m_lo || other.m_step != m_step || m_contour.empty())
       return sum_of_distances(other.m_contour, bound);
     const double limit = bound / m_scale;
@@ -135,6 +140,10 @@ public:
   }
 
 private:
+  void require_rows(std::size_t r) const {
+    if(r != rows())
+      throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: " + std::to_string(r) + " rows against " + std::to_string(rows()));
+  }
   struct Query {
     float frac;
     std::uint32_t cell;
