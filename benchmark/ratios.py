@@ -90,11 +90,22 @@ if cf and ci and cc:
 cp = runs.get("BM_ContourDistanceField_Prepare")
 if cp and sc:
     print(f"prepare a distance field: {ms(cp)*1e3:.0f} us ({ms(cp)/ms(sc):.2f}x building the contour)")
+cn = runs.get("BM_CompareContours_NearestPointIndex")
+if cn and ci and cc:
+    print(f"compare two prepared contours (nearest-point indices, exact L1): {ms(cn)*1e3:.2f} us -> {ms(ci)/ms(cn):.1f}x faster than two images, "
+          f"{ms(cc)/ms(cn):.1f}x than the row search; largest difference from it {cn['max_abs_difference']:.2g}, "
+          f"{cn['index_bytes']/1024:.1f} KB per index, {100*cn['slow_cells']:.2f}% slow cells, {cn['pieces']:.0f} envelope pieces")
+cnp = runs.get("BM_ContourNearestPointIndex_Prepare")
+if cnp and sc:
+    print(f"prepare a nearest-point index: {ms(cnp)*1e3:.0f} us ({ms(cnp)/ms(sc):.2f}x building the contour)")
+mn = runs.get("BM_MatchNearestPointIndex_PerComparison")
 mf = runs.get("BM_MatchDistanceField_PerComparison")
 mc = runs.get("BM_MatchContour_PerComparison")
 mi = runs.get("BM_Reference_MatchImage_PerComparison")
 if mc and mi:
     print(f"matching, per comparison: contour {ms(mc)*1e3/64:.2f} us (early exit), image {ms(mi)*1e3/64:.2f} us -> {ms(mi)/ms(mc):.1f}x")
+if mn and mi:
+    print(f"matching, per comparison: nearest-point indices {ms(mn)*1e3/64:.2f} us (early exit, exact) -> {ms(mi)/ms(mn):.1f}x an image")
 if mf and mi:
     print(f"matching, per comparison: distance fields {ms(mf)*1e3/64:.2f} us (early exit) -> {ms(mi)/ms(mf):.1f}x an image")
 for name in ("BM_PCL_SpinImage", "BM_PCL_SHOT352"):

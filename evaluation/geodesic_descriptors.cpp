@@ -189,6 +189,12 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
       basis_source.reset(new shapecorr::Laplace_beltrami_eigenbasis(shapecorr::compute_laplace_beltrami_eigenbasis(c.source.mesh, 300)));
     }
   };
+  auto prepared = [&](const std::vector<shapecorr::Spin_contour>& cs) {
+    std::vector<shapecorr::Contour_nearest_point_index> x(cs.size());
+    shapecorr::internal::parallel_for(cs.size(), shapecorr::internal::resolve_thread_count(threads),
+                                      [&](std::size_t i, unsigned) { x[i] = shapecorr::Contour_nearest_point_index(cs[i]); });
+    return x;
+  };
   std::vector<Descriptor_result> out;
   for(const std::string& d : descriptors) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -204,7 +210,8 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
       const G& gs = *gsd_source;
       if(d == "gsc") {
         r.label = "GSC";
-        const auto T = gt_.geodesic_spin_contours(all), P = gs.geodesic_spin_contours(c.points);
+        // the exact L1 distance from the contours' nearest-point indices (the same distances)
+        const auto T = prepared(gt_.geodesic_spin_contours(all)), P = prepared(gs.geodesic_spin_contours(c.points));
         r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::contour_l1_distance(P[i], T[j]); });
       } else {
         r.label = "GEODESIC SI";

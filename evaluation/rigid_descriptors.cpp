@@ -266,11 +266,15 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
       return shapecorr::match_descriptors(a, b, shapecorr::Spin_image_distance(), threads);
     };
   };
+  // contours by the exact L1 distance, from their nearest-point indices (the same distances)
   auto contours = [&](Spin_axis axis) {
     return [&, axis] {
-      const auto a = at_points<shapecorr::Spin_contour>(ds, src, axis, [&](const shapecorr::Oriented_point& op) { return ds.spin_contour(op); });
-      const auto b = at_points<shapecorr::Spin_contour>(dt, tgt, axis, [&](const shapecorr::Oriented_point& op) { return dt.spin_contour(op); });
-      return shapecorr::match_descriptors(a, b, shapecorr::Contour_l1_distance(), threads);
+      auto index = [](const shapecorr::Spin_descriptors<Mesh>& d) {
+        return [&d](const shapecorr::Oriented_point& op) { return shapecorr::Contour_nearest_point_index(d.spin_contour(op)); };
+      };
+      const auto a = at_points<shapecorr::Contour_nearest_point_index>(ds, src, axis, index(ds));
+      const auto b = at_points<shapecorr::Contour_nearest_point_index>(dt, tgt, axis, index(dt));
+      return shapecorr::match_descriptors(a, b, shapecorr::Indexed_contour_l1_distance(), threads);
     };
   };
   // the same contours compared through their distance fields (approximate L1)

@@ -139,18 +139,24 @@ Descriptor_set compute_set(const Mesh& m, const std::vector<std::size_t>& ids, c
   return s;
 }
 
-// The contours prepared as distance fields (in parallel).
-std::vector<shapecorr::Contour_distance_field> distance_fields(const std::vector<shapecorr::Spin_contour>& c) {
-  std::vector<shapecorr::Contour_distance_field> f(c.size());
-  shapecorr::internal::parallel_for(c.size(), 0, [&](std::size_t i, unsigned) { f[i] = shapecorr::Contour_distance_field(c[i]); });
+// The contours prepared for comparisons (distance fields or nearest-point indices), in parallel.
+template <typename Prepared>
+std::vector<Prepared> prepare(const std::vector<shapecorr::Spin_contour>& c) {
+  std::vector<Prepared> f(c.size());
+  shapecorr::internal::parallel_for(c.size(), 0, [&](std::size_t i, unsigned) { f[i] = Prepared(c[i]); });
   return f;
 }
 
-// Nearest descriptors; contours by the exact L1 distance, or (fields) the approximate one of their
-// distance fields.
+// Nearest descriptors; contours by the exact L1 distance (from nearest-point indices once there
+// are enough sources to repay preparing them: the same distances), or (fields) the approximate
+// one of their distance fields.
 std::vector<shapecorr::Descriptor_match> match_sets(const Descriptor_set& s, const Descriptor_set& t, bool fields) {
   if(!s.contours.empty() && fields)
-    return shapecorr::match_descriptors(distance_fields(s.contours), distance_fields(t.contours), shapecorr::Approximate_contour_l1_distance());
+    return shapecorr::match_descriptors(prepare<shapecorr::Contour_distance_field>(s.contours), prepare<shapecorr::Contour_distance_field>(t.contours),
+                                        shapecorr::Approximate_contour_l1_distance());
+  if(s.contours.size() >= 32)
+    return shapecorr::match_descriptors(prepare<shapecorr::Contour_nearest_point_index>(s.contours),
+                                        prepare<shapecorr::Contour_nearest_point_index>(t.contours), shapecorr::Indexed_contour_l1_distance());
   if(!s.contours.empty()) return shapecorr::match_descriptors(s.contours, t.contours, shapecorr::Contour_l1_distance());
   if(!s.images.empty()) return shapecorr::match_descriptors(s.images, t.images, shapecorr::Spin_image_distance());
   std::vector<Eigen::VectorXd> a, b;

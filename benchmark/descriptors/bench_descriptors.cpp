@@ -4,8 +4,9 @@
 // direction; 64 vertices spread over the mesh.
 //  - one Spin Contour (fast construction) against one face-based spin image of the same
 //    resolution (the reference) and one vertex spin image;
-//  - comparing two contours (row-merge L1, the kd-tree L1, and the approximate L1 of two prepared
-//    distance fields) against comparing two images (Johnson & Hebert correlation);
+//  - comparing two contours (row-search L1, the kd-tree L1, the same exact L1 from two prepared
+//    nearest-point indices, and the approximate L1 of two prepared distance fields) against
+//    comparing two images (Johnson & Hebert correlation);
 //  - with PCL (when built with it): PCL's spin image (153 bins) and SHOT352 for one point.
 #include "../bench_mesh.h"
 
@@ -155,6 +156,40 @@ void BM_ContourDistanceField_Prepare(benchmark::State& state) {
 }
 BENCHMARK(BM_ContourDistanceField_Prepare)->Unit(benchmark::kMicrosecond);
 
+// The same pairs through the contours' nearest-point indices (exact L1, prepared once per
+// contour); counters: the largest difference from contour_l1_distance over all 64 x 64 pairs, the
+// fraction of cells that take the row search, the index's bytes and pieces.
+void BM_CompareContours_NearestPointIndex(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::vector<shapecorr::Contour_nearest_point_index> x;
+  for(const auto& c : fx.contours) x.emplace_back(c);
+  double diff = 0, slow = 0, bytes = 0, pieces = 0;
+  for(std::size_t a = 0; a < 64; ++a) {
+    for(std::size_t b = 0; b < 64; ++b)
+      diff = std::max(diff, std::abs(shapecorr::contour_l1_distance(x[a], x[b]) - shapecorr::contour_l1_distance(fx.contours[a], fx.contours[b])));
+    slow += x[a].slow_cell_fraction() / 64;
+    bytes += static_cast<double>(x[a].memory_bytes()) / 64;
+    pieces += static_cast<double>(x[a].number_of_pieces()) / 64;
+  }
+  std::size_t i = 0;
+  for(auto _ : state) {
+    const auto p = pair_of(i++);
+    benchmark::DoNotOptimize(shapecorr::contour_l1_distance(x[p.first], x[p.second]));
+  }
+  state.counters["max_abs_difference"] = diff;
+  state.counters["slow_cells"] = slow;
+  state.counters["index_bytes"] = bytes;
+  state.counters["pieces"] = pieces;
+
+}
+BENCHMARK(BM_CompareContours_NearestPointIndex)->Unit(benchmark::kMicrosecond);
+void BM_ContourNearestPointIndex_Prepare(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::size_t i = 0;
+  for(auto _ : state) benchmark::DoNotOptimize(shapecorr::Contour_nearest_point_index(fx.contours[i++ % 64]).memory_bytes());
+}
+BENCHMARK(BM_ContourNearestPointIndex_Prepare)->Unit(benchmark::kMicrosecond);
+
 // Matching: one source descriptor (the next of the fixture at each iteration) against the 64 of
 // the fixture (time per comparison); contours use the early exit at the second-best distance.
 void BM_MatchContour_PerComparison(benchmark::State& state) {
@@ -189,6 +224,18 @@ void BM_MatchDistanceField_PerComparison(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
 }
 BENCHMARK(BM_MatchDistanceField_PerComparison)->Unit(benchmark::kMicrosecond);
+void BM_MatchNearestPointIndex_PerComparison(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::vector<shapecorr::Contour_nearest_point_index> x;
+  for(const auto& c : fx.contours) x.emplace_back(c);
+  std::size_t i = 0;
+  for(auto _ : state) {
+    const std::vector<shapecorr::Contour_nearest_point_index> one(1, x[i++ % 64]);
+    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, x, shapecorr::Indexed_contour_l1_distance(), 1)[0].target);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+}
+BENCHMARK(BM_MatchNearestPointIndex_PerComparison)->Unit(benchmark::kMicrosecond);
 
 #ifdef SHAPECORR_WITH_PCL
 struct Pcl_fixture {

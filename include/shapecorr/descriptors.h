@@ -9,6 +9,7 @@
 #define SHAPECORR_DESCRIPTORS_H
 
 #include <shapecorr/descriptors/Contour_distance_field.h>
+#include <shapecorr/descriptors/Contour_nearest_point_index.h>
 #include <shapecorr/descriptors/Geodesic_spin_descriptors.h>
 #include <shapecorr/descriptors/Spin_contour.h>
 #include <shapecorr/descriptors/Spin_descriptors.h>

@@ -399,6 +399,16 @@ TEMPLATE_TEST_CASE("matching descriptors of a moved copy finds every vertex itse
   correct = 0;
   for(const auto& mt : shapecorr::match_descriptors(fa, fb, shapecorr::Approximate_contour_l1_distance())) correct += mt.target == 7 * mt.source;
   CHECK(correct == fa.size());
+  // And through the contours' nearest-point indices: the same matches and distances as the contours.
+  std::vector<shapecorr::Contour_nearest_point_index> xa, xb;
+  for(const auto& c : sa) xa.emplace_back(c);
+  for(const auto& c : sb) xb.emplace_back(c);
+  const auto indexed = shapecorr::match_descriptors(xa, xb, shapecorr::Indexed_contour_l1_distance());
+  REQUIRE(indexed.size() == matches.size());
+  for(std::size_t i = 0; i < matches.size(); ++i) {
+    CHECK(indexed[i].target == matches[i].target);
+    CHECK(indexed[i].distance == Approx(matches[i].distance).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("spin image comparison: correlation of proportional images is 1, similarity ranks", "[descriptors][spin-image]") {
@@ -444,6 +454,10 @@ TEST_CASE("contour L1 distance with a bound: exact below it, above it when excee
 }
 
 namespace {
+// The directed sum of contour_l1_distance: the points of X against Y.
+double internal_sum(const shapecorr::Spin_contour& X, const shapecorr::Spin_contour& Y) {
+  return shapecorr::internal::directed_contour_sum(X, Y, std::numeric_limits<double>::infinity());
+}
 // Distance from (alpha, row r) to the nearest point of c, by brute force.
 double brute_distance(const shapecorr::Spin_contour& c, std::size_t r, double alpha) {
   double best = std::numeric_limits<double>::infinity();
@@ -548,4 +562,117 @@ TEST_CASE("contour distance field of hand-made contours: analytic distances, ran
   CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Spin_contour(12)), shapecorr::Invalid_input);
   CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12))), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::Contour_distance_field(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
+}
+
+namespace {
+// |x - y| within rounding (the index evaluates each distance as contour_l1_distance does; only
+// breakpoints between nearly equal alphas can round differently)
+bool same_value(double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(y)); }
+} // namespace
+
+TEMPLATE_TEST_CASE("contour nearest-point index: the exact L1 distance, at every cell count, on any grid", "[descriptors][contour-distance][nearest-point-index]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  make_bumpy_sphere(m, 3);
+  const shapecorr::Spin_descriptors<TestType> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
+  std::vector<shapecorr::Spin_contour> c;
+  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  // the geodesic contours of the same mesh (alphas by the agd range, beta in [0, 1])
+  const shapecorr::Geodesic_spin_descriptors<TestType> gs(m, SP::support_fraction(0.4).agd_radius_fraction(0.15));
+  std::vector<shapecorr::Spin_contour> g = gs.geodesic_spin_contours({0, 5, 99, 300, 640});
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-0.2f, 1.2f);
+  for(const auto* set : {&c, &g}) {
+    const auto& cs = *set;
+    std::vector<shapecorr::Contour_nearest_point_index> fine, coarse;
+    for(const auto& x : cs) {
+      fine.emplace_back(x);       // 128 cells: few slow cells
+      coarse.emplace_back(x, 1);  // one cell: most points take the row search
+    }
+    for(std::size_t i = 0; i < cs.size(); ++i) {
+      REQUIRE(!cs[i].empty());
+      CHECK(fine[i].cells_per_row() == 128);
+      CHECK(fine[i].slow_cell_fraction() < 0.05);
+      CHECK(coarse[i].slow_cell_fraction() > 0.2);
+      CHECK(fine[i].number_of_pieces() >= cs[i].rows());
+      CHECK(shapecorr::contour_l1_distance(fine[i], fine[i]) == 0.0);
+      // single points, on and off the sampled range: the brute-force nearest distance
+      for(std::size_t r = 0; r < cs[i].rows(); r += 3)
+        for(int k = 0; k < 4; ++k) {
+          const float a = u(rng);
+          CHECK(fine[i].distance(r, a) == Approx(brute_distance(cs[i], r, a)).epsilon(1e-9).margin(1e-12));
+          CHECK(coarse[i].distance(r, a) == Approx(brute_distance(cs[i], r, a)).epsilon(1e-9).margin(1e-12));
+        }
+      for(std::size_t j = 0; j < cs.size(); ++j) {
+        const double exact = shapecorr::contour_l1_distance(cs[i], cs[j]);
+        CHECK(same_value(shapecorr::contour_l1_distance(fine[i], fine[j]), exact));
+        CHECK(same_value(shapecorr::contour_l1_distance(coarse[i], coarse[j]), exact));
+        CHECK(same_value(shapecorr::contour_l1_distance(fine[i], coarse[j]), exact)); // different grids
+        CHECK(shapecorr::contour_l1_distance(fine[i], fine[j]) == shapecorr::contour_l1_distance(fine[j], fine[i]));
+        // the bound as in contour_l1_distance
+        if(i != j) {
+          CHECK(same_value(shapecorr::contour_l1_distance(fine[i], fine[j], 2 * exact), exact));
+          CHECK(shapecorr::contour_l1_distance(fine[i], fine[j], 0.5 * exact) > 0.5 * exact);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("contour nearest-point index of hand-made contours: analytic distances, dense rows, outer cells and errors", "[descriptors][contour-distance][nearest-point-index]") {
+  // every row holds alpha = 0.3: the distance from (alpha, any row) is |alpha - 0.3|
+  shapecorr::Spin_contour line(10);
+  const std::vector<float> p{0.3f};
+  for(std::size_t r = 0; r < 10; ++r) line.append_row(r, p.begin(), p.end());
+  const shapecorr::Contour_nearest_point_index xl(line, 8);
+  for(std::size_t r = 0; r < 10; ++r)
+    for(float a : {-3.0f, 0.0f, 0.3f, 0.35f, 0.8f, 1.0f, 7.5f}) CHECK(xl.distance(r, a) == std::abs(static_cast<double>(a) - static_cast<double>(0.3f)));
+  // one point in row 0 at alpha 0.5: straight above it the distance is the row gap
+  shapecorr::Spin_contour dot(10);
+  const std::vector<float> q{0.5f}, none;
+  dot.append_row(0, q.begin(), q.end());
+  for(std::size_t r = 1; r < 10; ++r) dot.append_row(r, none.begin(), none.end());
+  const shapecorr::Contour_nearest_point_index xd(dot);
+  for(std::size_t r = 0; r < 10; ++r) {
+    CHECK(xd.distance(r, 0.5f) == Approx(static_cast<double>(r) * dot.row_spacing()).epsilon(1e-12));
+    CHECK(xd.distance(r, 0.1f) == Approx(std::hypot(0.5 - static_cast<double>(0.1f), static_cast<double>(r) * dot.row_spacing())).epsilon(1e-12));
+  }
+  // alphas beyond [0, 1], a dense row (many pieces in one cell: the row search), equal alphas in
+  // several rows, and queries beyond every cell
+  shapecorr::Spin_contour wild(10);
+  std::vector<std::vector<float>> rows(10);
+  rows[0] = {-0.5f, 1.25f};
+  for(int k = 0; k < 300; ++k) rows[3].push_back(0.4f + 1e-4f * static_cast<float>(k));
+  rows[4] = {0.6f};
+  rows[6] = {0.6f, 0.9f};
+  rows[9] = {0.6f, 2.0f};
+  for(std::size_t r = 0; r < 10; ++r) wild.append_row(r, rows[r].begin(), rows[r].end());
+  const shapecorr::Contour_nearest_point_index xw(wild);
+  CHECK(xw.slow_cell_fraction() > 0.0);
+  shapecorr::Spin_contour far(10);
+  std::vector<float> f{-2.0f, 0.41f, 0.6f, 3.0f};
+  for(std::size_t r = 0; r < 10; ++r) far.append_row(r, f.begin(), f.end());
+  const shapecorr::Contour_nearest_point_index xf(far, 3);
+  for(std::size_t r = 0; r < 10; ++r)
+    for(float a : {-2.0f, -0.7f, 0.0f, 0.41f, 0.4150f, 0.6f, 1.1f, 2.0f, 3.0f}) CHECK(xw.distance(r, a) == Approx(brute_distance(wild, r, a)).epsilon(1e-12));
+  for(const auto* x : {&xl, &xd, &xw, &xf})
+    for(const auto* y : {&xl, &xd, &xw, &xf}) {
+      CHECK(same_value(shapecorr::contour_l1_distance(*x, *y), shapecorr::contour_l1_distance(x->contour(), y->contour())));
+      CHECK(same_value(x->sum_of_distances(*y), internal_sum(y->contour(), x->contour())));
+    }
+  // empty contours as in contour_l1_distance; typed errors
+  const shapecorr::Contour_nearest_point_index xe(shapecorr::Spin_contour(10));
+  CHECK(shapecorr::contour_l1_distance(xe, xe) == 0.0);
+  CHECK(std::isinf(shapecorr::contour_l1_distance(xe, xl)));
+  CHECK(std::isinf(xe.distance(0, 0.5f)));
+  CHECK(xe.memory_bytes() < xl.memory_bytes());
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12)), xl), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(xl.sum_of_distances(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12))), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 0), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 65537), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(xl.distance(10, 0.5f), shapecorr::Invalid_input);
+  // a rigid and a geodesic contour (rows on different lines) are not comparable
+  const shapecorr::Contour_nearest_point_index xg(shapecorr::Spin_contour(10, 1.0, 0.0, 1.0));
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(xg, xl), shapecorr::Invalid_input);
 }

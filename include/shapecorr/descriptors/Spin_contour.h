@@ -80,27 +80,29 @@ inline double nearest_in_row2(const float* y, std::size_t ny, float a) {
   return d * d;
 }
 
-// Sum over the points of X of the distance to the nearest point of Y (both row-structured): for
-// each point, rows of Y outwards from its own until the row gap exceeds the best distance found.
-// Stops early (returning a value >= bound) once the sum exceeds `bound`.
-inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, double bound) {
-  const std::size_t R = X.rows();
-  const double h = X.row_spacing();
-  const float* xa = X.alphas().data();
+// Squared distance from the point (a, row r) to the nearest point of Y: rows of Y outwards from r
+// until the row gap exceeds the best distance found.
+inline double nearest_contour_point2(const Spin_contour& Y, std::size_t r, float a) {
+  const std::size_t R = Y.rows();
+  const double h = Y.row_spacing();
   const float* ya = Y.alphas().data();
+  double best = nearest_in_row2(ya + Y.row_begin(r), Y.row_end(r) - Y.row_begin(r), a);
+  for(std::size_t k = 1; k < R; ++k) {
+    const double gap2 = (h * static_cast<double>(k)) * (h * static_cast<double>(k));
+    if(gap2 >= best) break;
+    if(r >= k) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r - k), Y.row_end(r - k) - Y.row_begin(r - k), a));
+    if(r + k < R) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r + k), Y.row_end(r + k) - Y.row_begin(r + k), a));
+  }
+  return best;
+}
+
+// Sum over the points of X of the distance to the nearest point of Y (both row-structured, on
+// the same rows). Stops early (returning a value >= bound) once the sum exceeds `bound`.
+inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y, double bound) {
+  const float* xa = X.alphas().data();
   double sum = 0;
-  for(std::size_t r = 0; r < R; ++r) {
-    for(std::size_t i = X.row_begin(r); i < X.row_end(r); ++i) {
-      const float a = xa[i];
-      double best = nearest_in_row2(ya + Y.row_begin(r), Y.row_end(r) - Y.row_begin(r), a);
-      for(std::size_t k = 1; k < R; ++k) {
-        const double gap2 = (h * static_cast<double>(k)) * (h * static_cast<double>(k));
-        if(gap2 >= best) break;
-        if(r >= k) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r - k), Y.row_end(r - k) - Y.row_begin(r - k), a));
-        if(r + k < R) best = std::min(best, gap2 + nearest_in_row2(ya + Y.row_begin(r + k), Y.row_end(r + k) - Y.row_begin(r + k), a));
-      }
-      sum += std::sqrt(best);
-    }
+  for(std::size_t r = 0; r < X.rows(); ++r) {
+    for(std::size_t i = X.row_begin(r); i < X.row_end(r); ++i) sum += std::sqrt(nearest_contour_point2(Y, r, xa[i]));
     if(sum > bound) return sum;
   }
   return sum;
