@@ -468,15 +468,21 @@ double brute_distance(const shapecorr::Spin_contour& c, std::size_t r, double al
     }
   return best;
 }
+// Spin Contours (central direction) of five vertices spread over a bumpy sphere.
+template <typename Mesh>
+std::vector<shapecorr::Spin_contour> spread_contours(const Mesh& m) {
+  const shapecorr::Spin_descriptors<Mesh> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
+  std::vector<shapecorr::Spin_contour> c;
+  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  return c;
+}
 } // namespace
 
 TEMPLATE_TEST_CASE("contour distance field: exact samples, approximate L1 within its bound, symmetric", "[descriptors][contour-distance][distance-field]",
                    test::Surface_mesh, test::Polyhedron) {
   TestType m;
   make_bumpy_sphere(m, 3);
-  const shapecorr::Spin_descriptors<TestType> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
-  std::vector<shapecorr::Spin_contour> c;
-  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  const std::vector<shapecorr::Spin_contour> c = spread_contours(m);
   for(std::size_t samples : {121u, 31u, 5u}) {
     std::vector<shapecorr::Contour_distance_field> f;
     for(const auto& x : c) f.emplace_back(x, samples);
@@ -574,12 +580,10 @@ TEMPLATE_TEST_CASE("contour nearest-point index: the exact L1 distance, at every
                    test::Surface_mesh, test::Polyhedron) {
   TestType m;
   make_bumpy_sphere(m, 3);
-  const shapecorr::Spin_descriptors<TestType> sd(m, SP::spin_axis(Spin_axis::CENTRAL_DIRECTION));
-  std::vector<shapecorr::Spin_contour> c;
-  for(std::size_t i : {0u, 5u, 99u, 300u, 640u}) c.push_back(sd.spin_contour(sd.oriented_point(vertex_at(m, i))));
+  const std::vector<shapecorr::Spin_contour> c = spread_contours(m);
   // the geodesic contours of the same mesh (alphas by the agd range, beta in [0, 1])
   const shapecorr::Geodesic_spin_descriptors<TestType> gs(m, SP::support_fraction(0.4).agd_radius_fraction(0.15));
-  std::vector<shapecorr::Spin_contour> g = gs.geodesic_spin_contours({0, 5, 99, 300, 640});
+  const std::vector<shapecorr::Spin_contour> g = gs.geodesic_spin_contours({0, 5, 99, 300, 640});
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-0.2f, 1.2f);
   for(const auto* set : {&c, &g}) {
