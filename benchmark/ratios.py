@@ -121,6 +121,13 @@ if g:
     if gi:
         line += f"; geodesic spin image from the same ball: {ms(gi)*1e3:.1f} us (GSC/GSI {ms(g)/ms(gi):.1f}x)"
     print(line)
+gt = runs.get("BM_GSC_AllVertices_FromDistances/iterations:3/manual_time")
+if gt:
+    per = ms(gt) * 1e3 / gt["vertices"]
+    line = f"GSCs of all {int(gt['vertices'])} vertices from given distances on {int(gt['threads'])} threads: {ms(gt):.0f} ms, {per:.0f} us of wall time per contour"
+    if g:
+        line += f" ({ms(g)*1e3/per:.2f}x the one-contour time)"
+    print(line)
 gb = runs.get("BM_GSC_SupportBall")
 if gb:
     print(f"radius-limited march to L + longest edge: {ms(gb)*1e3:.0f} us per point")

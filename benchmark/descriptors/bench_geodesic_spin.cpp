@@ -3,6 +3,7 @@
 // each against a reference measured in the same run:
 //  - one GSC once the distances exist (the geodesic ball of the point precomputed) vs the
 //    geodesic spin image from the same ball;
+//  - the GSCs of all vertices from their precomputed balls on every core (throughput per contour);
 //  - the GSC of every vertex including every geodesic computation (diameter, local agd, one
 //    radius-limited march per vertex) vs all-pairs fast-marching distances (what the thesis computed
 //    first, in about 15 minutes, before any descriptor).
@@ -19,6 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -75,6 +77,30 @@ void BM_Reference_GeodesicSpinImage_FromDistances(benchmark::State& state) {
   for(auto _ : state) benchmark::DoNotOptimize(fx.gsd->geodesic_spin_image(fx.balls[i++ % 64]).values().data());
 }
 BENCHMARK(BM_Reference_GeodesicSpinImage_FromDistances)->Unit(benchmark::kMicrosecond);
+
+// Throughput once the distances exist: the GSCs of all vertices from their precomputed balls, on
+// every core (each thread with its own workspace); the counter is the wall time per contour.
+void BM_GSC_AllVertices_FromDistances(benchmark::State& state) {
+  Fixture& fx = fixture();
+  const std::size_t n = fx.gsd->number_of_vertices();
+  static std::vector<GSD::Ball> all; // every vertex's ball (about 150 MB on the wolf)
+  if(all.empty()) {
+    all.resize(n);
+    shapecorr::internal::parallel_for(n, 0, [&](std::size_t i, unsigned) { fx.gsd->support_ball(i, all[i]); });
+  }
+  std::vector<std::size_t> points(n);
+  for(auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    shapecorr::internal::parallel_for(n, 0, [&](std::size_t i, unsigned) { points[i] = fx.gsd->geodesic_spin_contour(all[i]).size(); });
+    const auto t1 = std::chrono::steady_clock::now();
+    state.SetIterationTime(std::chrono::duration<double>(t1 - t0).count());
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.counters["vertices"] = static_cast<double>(n);
+  state.counters["threads"] = static_cast<double>(shapecorr::internal::resolve_thread_count(0));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_GSC_AllVertices_FromDistances)->Unit(benchmark::kMillisecond)->Iterations(3)->UseManualTime();
 
 // One radius-limited march to L + the longest edge (the distances one GSC needs).
 void BM_GSC_SupportBall(benchmark::State& state) {

@@ -21,11 +21,12 @@ inline unsigned resolve_thread_count(unsigned requested) {
   return hw == 0 ? 1u : hw;
 }
 
-/// Calls fn(item, thread_id) for item in [0, count) on up to `threads` threads (dynamic scheduling).
+/// Calls fn(item, thread_id) for item in [0, count) on up to `threads` threads (0 = all hardware
+/// threads; dynamic scheduling).
 /// The first exception thrown by fn is rethrown in the caller after all threads stopped.
 template <typename Fn>
 void parallel_for(std::size_t count, unsigned threads, Fn&& fn) {
-  threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(count, 1))));
+  threads = std::min<unsigned>(resolve_thread_count(threads), static_cast<unsigned>(std::max<std::size_t>(count, 1)));
   if(threads == 1) {
     for(std::size_t i = 0; i < count; ++i) fn(i, 0u);
     return;
