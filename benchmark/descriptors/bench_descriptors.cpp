@@ -124,13 +124,25 @@ void BM_Reference_CompareImages(benchmark::State& state) {
 }
 BENCHMARK(BM_Reference_CompareImages)->Unit(benchmark::kMicrosecond);
 
+// The fixture's contours prepared for comparisons (distance fields or nearest-point indices).
+template <typename Prepared>
+std::vector<Prepared> prepared(const std::vector<shapecorr::Spin_contour>& contours) {
+  return std::vector<Prepared>(contours.begin(), contours.end());
+}
+// Preparing one contour (the next of the fixture at each iteration).
+template <typename Prepared>
+void prepare_one(benchmark::State& state) {
+  Fixture& fx = fixture();
+  std::size_t i = 0;
+  for(auto _ : state) benchmark::DoNotOptimize(Prepared(fx.contours[i++ % 64]).memory_bytes());
+}
+
 // The same pairs through the contours' distance fields (approximate L1, prepared once per
 // contour); counters: the largest absolute and relative difference from the exact L1 over all
 // 64 x 64 pairs, and the field's bytes.
 void BM_CompareContours_DistanceField(benchmark::State& state) {
   Fixture& fx = fixture();
-  std::vector<shapecorr::Contour_distance_field> f;
-  for(const auto& c : fx.contours) f.emplace_back(c);
+  const auto f = prepared<shapecorr::Contour_distance_field>(fx.contours);
   double abs_err = 0, rel_err = 0;
   for(std::size_t a = 0; a < 64; ++a)
     for(std::size_t b = 0; b < 64; ++b) {
@@ -149,11 +161,7 @@ void BM_CompareContours_DistanceField(benchmark::State& state) {
   state.counters["field_bytes"] = static_cast<double>(f[0].memory_bytes());
 }
 BENCHMARK(BM_CompareContours_DistanceField)->Unit(benchmark::kMicrosecond);
-void BM_ContourDistanceField_Prepare(benchmark::State& state) {
-  Fixture& fx = fixture();
-  std::size_t i = 0;
-  for(auto _ : state) benchmark::DoNotOptimize(shapecorr::Contour_distance_field(fx.contours[i++ % 64]).memory_bytes());
-}
+void BM_ContourDistanceField_Prepare(benchmark::State& state) { prepare_one<shapecorr::Contour_distance_field>(state); }
 BENCHMARK(BM_ContourDistanceField_Prepare)->Unit(benchmark::kMicrosecond);
 
 // The same pairs through the contours' nearest-point indices (exact L1, prepared once per
@@ -161,8 +169,7 @@ BENCHMARK(BM_ContourDistanceField_Prepare)->Unit(benchmark::kMicrosecond);
 // fraction of cells that take the row search, the index's bytes and pieces.
 void BM_CompareContours_NearestPointIndex(benchmark::State& state) {
   Fixture& fx = fixture();
-  std::vector<shapecorr::Contour_nearest_point_index> x;
-  for(const auto& c : fx.contours) x.emplace_back(c);
+  const auto x = prepared<shapecorr::Contour_nearest_point_index>(fx.contours);
   double diff = 0, slow = 0, bytes = 0, pieces = 0;
   for(std::size_t a = 0; a < 64; ++a) {
     for(std::size_t b = 0; b < 64; ++b)
@@ -180,60 +187,36 @@ void BM_CompareContours_NearestPointIndex(benchmark::State& state) {
   state.counters["slow_cells"] = slow;
   state.counters["index_bytes"] = bytes;
   state.counters["pieces"] = pieces;
-
 }
 BENCHMARK(BM_CompareContours_NearestPointIndex)->Unit(benchmark::kMicrosecond);
-void BM_ContourNearestPointIndex_Prepare(benchmark::State& state) {
-  Fixture& fx = fixture();
-  std::size_t i = 0;
-  for(auto _ : state) benchmark::DoNotOptimize(shapecorr::Contour_nearest_point_index(fx.contours[i++ % 64]).memory_bytes());
-}
+void BM_ContourNearestPointIndex_Prepare(benchmark::State& state) { prepare_one<shapecorr::Contour_nearest_point_index>(state); }
 BENCHMARK(BM_ContourNearestPointIndex_Prepare)->Unit(benchmark::kMicrosecond);
 
-// Matching: one source descriptor (the next of the fixture at each iteration) against the 64 of
-// the fixture (time per comparison); contours use the early exit at the second-best distance.
-void BM_MatchContour_PerComparison(benchmark::State& state) {
-  Fixture& fx = fixture();
+// Matching: one source descriptor (the next of the set at each iteration) against the 64 of the
+// set (time per comparison); contours use the early exit at the second-best distance.
+template <typename Descriptor, typename Distance>
+void match_one_against_all(benchmark::State& state, const std::vector<Descriptor>& set, Distance distance) {
   std::size_t i = 0;
   for(auto _ : state) {
-    const std::vector<shapecorr::Spin_contour> one(1, fx.contours[i++ % 64]);
-    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, fx.contours, shapecorr::Contour_l1_distance(), 1)[0].target);
+    const std::vector<Descriptor> one(1, set[i++ % set.size()]);
+    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, set, distance, 1)[0].target);
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * set.size()));
+}
+void BM_MatchContour_PerComparison(benchmark::State& state) {
+  match_one_against_all(state, fixture().contours, shapecorr::Contour_l1_distance());
 }
 BENCHMARK(BM_MatchContour_PerComparison)->Unit(benchmark::kMicrosecond);
 void BM_Reference_MatchImage_PerComparison(benchmark::State& state) {
-  Fixture& fx = fixture();
-  std::size_t i = 0;
-  for(auto _ : state) {
-    const std::vector<shapecorr::Spin_image> one(1, fx.images[i++ % 64]);
-    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, fx.images, shapecorr::Spin_image_distance(), 1)[0].target);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+  match_one_against_all(state, fixture().images, shapecorr::Spin_image_distance());
 }
 BENCHMARK(BM_Reference_MatchImage_PerComparison)->Unit(benchmark::kMicrosecond);
 void BM_MatchDistanceField_PerComparison(benchmark::State& state) {
-  Fixture& fx = fixture();
-  std::vector<shapecorr::Contour_distance_field> f;
-  for(const auto& c : fx.contours) f.emplace_back(c);
-  std::size_t i = 0;
-  for(auto _ : state) {
-    const std::vector<shapecorr::Contour_distance_field> one(1, f[i++ % 64]);
-    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, f, shapecorr::Approximate_contour_l1_distance(), 1)[0].target);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+  match_one_against_all(state, prepared<shapecorr::Contour_distance_field>(fixture().contours), shapecorr::Approximate_contour_l1_distance());
 }
 BENCHMARK(BM_MatchDistanceField_PerComparison)->Unit(benchmark::kMicrosecond);
 void BM_MatchNearestPointIndex_PerComparison(benchmark::State& state) {
-  Fixture& fx = fixture();
-  std::vector<shapecorr::Contour_nearest_point_index> x;
-  for(const auto& c : fx.contours) x.emplace_back(c);
-  std::size_t i = 0;
-  for(auto _ : state) {
-    const std::vector<shapecorr::Contour_nearest_point_index> one(1, x[i++ % 64]);
-    benchmark::DoNotOptimize(shapecorr::match_descriptors(one, x, shapecorr::Indexed_contour_l1_distance(), 1)[0].target);
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 64);
+  match_one_against_all(state, prepared<shapecorr::Contour_nearest_point_index>(fixture().contours), shapecorr::Indexed_contour_l1_distance());
 }
 BENCHMARK(BM_MatchNearestPointIndex_PerComparison)->Unit(benchmark::kMicrosecond);
 
