@@ -40,6 +40,7 @@ struct Geodesic_section {
     double a, t; // agd, gd / h - 1/2 (row r lies at t = r)
   };
   typedef double Point;
+  static constexpr bool linear = true; // alpha is linear along a segment: its range is that of its end points
   static Point at(const Vertex& a, const Vertex& b, double c) { return a.a + c * (b.a - a.a); }
   static Point at(const Vertex& a) { return a.a; }
   double merge_eps = 0;
@@ -153,6 +154,7 @@ public:
     // topology: faces with their neighbours; each face listed once, under its corner of smallest
     // index (its owner); the longest edge
     m_links = internal::build_face_links(a);
+    m_half_edges = internal::build_half_edge_links(m_links);
     m_owned_begin.assign(n + 1, 0);
     auto owner = [&](std::size_t f) { return static_cast<std::size_t>(std::min({m_links[f].v[0], m_links[f].v[1], m_links[f].v[2]})); };
     for(std::size_t f = 0; f < m; ++f) ++m_owned_begin[owner(f) + 1];
@@ -300,7 +302,7 @@ private:
       if(e - b > kOwnedCopy) std::copy(m_owned.data() + b + kOwnedCopy, m_owned.data() + e, faces + nf + kOwnedCopy);
       nf += e - b;
     }
-    internal::build_level_set_contour(m_links, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
+    internal::build_level_set_contour(m_links, m_half_edges, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
       for(std::size_t k = 0; k < nf; ++k) visit(faces[k]);
     }, st.cws, c);
     for(const auto& p : ball) unset(st, p.first);
@@ -343,6 +345,7 @@ private:
   double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0;
   std::vector<double> m_agd, m_vertex_area;
   std::vector<internal::Face_link> m_links;
+  std::vector<internal::Half_edge_link> m_half_edges;
   std::vector<std::uint32_t> m_owned_begin, m_owned; // faces by their corner of smallest index
   unsigned m_threads = 1;
 };

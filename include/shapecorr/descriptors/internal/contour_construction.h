@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -74,6 +75,43 @@ inline std::vector<Face_link> build_face_links(const Triangle_arrays& a) {
   return links;
 }
 
+/// The contour walk's half-edge records: half-edge h = 4 f + k is edge k of face f (corner k to
+/// k + 1; slot 3 of each face is unused, so that h >> 2 is the face). A walk crossing face f
+/// through its edge k leaves through the next half-edge (corner k + 1 to k + 2) or the previous
+/// one (k + 2 to k); the record holds the corner opposite the edge, which decides, and the twins
+/// of both candidates in their faces (-1 on a boundary), so that a step reads one record and the
+/// opposite corner's vertex record.
+struct alignas(16) Half_edge_link {
+  std::int32_t opposite;
+  std::int32_t next_twin, prev_twin;
+  std::int32_t flips; // bit 0 (1): the next (previous) twin runs the same way (faces oriented inconsistently)
+};
+
+// The twin of half-edge k of face f in its face (-1 when none) and whether it runs the same way.
+inline std::int32_t twin_half_edge(const std::vector<Face_link>& links, std::size_t f, int k, bool& same_way) {
+  const int nb = links[f].nb[k];
+  same_way = false;
+  if(nb < 0 || links[f].edge[k] < 0) return -1;
+  const int e = links[f].edge[k];
+  same_way = links[static_cast<std::size_t>(nb)].v[e] == links[f].v[k];
+  return 4 * nb + e;
+}
+
+inline std::vector<Half_edge_link> build_half_edge_links(const std::vector<Face_link>& links) {
+  std::vector<Half_edge_link> he(4 * links.size(), Half_edge_link{-1, -1, -1, 0});
+  for(std::size_t f = 0; f < links.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      Half_edge_link& h = he[4 * f + static_cast<std::size_t>(k)];
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      bool same_next, same_prev;
+      h.opposite = links[f].v[k2];
+      h.next_twin = twin_half_edge(links, f, k1, same_next);
+      h.prev_twin = twin_half_edge(links, f, k2, same_prev);
+      h.flips = (same_next ? 1 : 0) | (same_prev ? 2 : 0);
+    }
+  return he;
+}
+
 // A hint to start loading the cache line at p (no effect where the compiler has no builtin).
 inline void prefetch(const void* p) {
 #if defined(__GNUC__) || defined(__clang__)
@@ -127,154 +165,48 @@ struct Contour_workspace {
   }
 };
 
-/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`, rows set with `ws.set_rows`) over the
-/// faces `for_each_face(fn)` visits; `F` holds the faces' corners (3 per face, as in `links`: the
-/// classification pass reads this compact copy). The section policy `S` gives the per-vertex record `S::Vertex`,
-/// the point type on a level line `S::Point`, `S::at(a, b, c)` (the point at a + c (b - a)),
-/// `S::at(a)`, `s.segment(p, q, l, u)` (the alpha range, possibly in squared units, of a segment of a
-/// level line), `s.polygon(points, n, in_plane, l, u)` (the same for a face with corners on the
-/// line: n points, or the whole triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range;
-/// false drops it), `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`.
-/// Alpha is sampled on `cols` columns over [0, alpha_scale] for the closing samples and stored
-/// divided by `alpha_scale`; `out` must have R rows.
-template <typename S, typename FaceVisitor>
-void build_level_set_contour(const std::vector<Face_link>& links, const int* F, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
-                             FaceVisitor&& for_each_face, Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
-  typedef typename S::Vertex V;
+// The section of a face (corner records w) with the line t as an alpha range [l, u]; 0 when
+// empty, else the bit mask of the edges (corner k to k+1) through which the section leaves the face.
+template <typename S>
+int level_line_section(const S& s, const typename S::Vertex* const* w, double t, double& l, double& u) {
   typedef typename S::Point P;
-  const std::size_t m = links.size();
+  const double d[3] = {w[0]->t - t, w[1]->t - t, w[2]->t - t};
+  if(d[0] != 0 && d[1] != 0 && d[2] != 0) {
+    // The common case: one vertex alone on its side; the section joins its two edges.
+    const bool p0 = d[0] > 0, p1 = d[1] > 0, p2 = d[2] > 0;
+    if(p0 == p1 && p1 == p2) return 0;
+    const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    s.segment(S::at(*w[k], *w[a], d[k] / (d[k] - d[a])), S::at(*w[k], *w[b], d[k] / (d[k] - d[b])), l, u);
+    return (1 << k) | (1 << b); // edges (k, k+1) and (k+2, k)
+  }
+  P pts[6];
+  int np = 0;
+  for(int k = 0; k < 3; ++k) {
+    const int k2 = (k + 1) % 3;
+    if(d[k] == 0) pts[np++] = S::at(*w[k]);
+    if((d[k] < 0 && d[k2] > 0) || (d[k] > 0 && d[k2] < 0)) pts[np++] = S::at(*w[k], *w[k2], d[k] / (d[k] - d[k2]));
+  }
+  if(np == 0) return 0;
+  s.polygon(pts, np, np == 3 && d[0] == 0 && d[1] == 0 && d[2] == 0, l, u);
+  int edges = 0; // corners on the line: leave through every edge the line meets
+  for(int k = 0; k < 3; ++k)
+    if(d[k] * d[(k + 1) % 3] <= 0) edges |= 1 << k;
+  return edges;
+}
+
+// The point of the line t on the edge from corner record i to j.
+template <typename S>
+typename S::Point level_line_point(const typename S::Vertex& i, const typename S::Vertex& j, double t) {
+  const double si = i.t - t, sj = j.t - t;
+  return S::at(i, j, si == sj ? 0.0 : si / (si - sj));
+}
+
+// The contour from the pieces' intervals in `ws.entries` (rows 0..R-1): the union per row, the
+// end points and the closing samples (see build_level_set_contour).
+template <typename S, typename V>
+void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, double alpha_scale, Contour_workspace<V>& ws, Spin_contour& out) {
   ws.merged.resize(R);
-  ws.entries.clear();
-  // 1. The faces each row line crosses (most faces cross none or one), grouped by row; branch-free
-  //    in the common case (at most two rows): both candidate entries are written and the end
-  //    advances by the count.
-  std::size_t n_rows = 0;
-  const int last_row = static_cast<int>(R) - 1;
-  for_each_face([&](std::size_t f) {
-    const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
-    const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
-    const auto& a2 = ws.rows[static_cast<std::size_t>(F[3 * f + 2])];
-    // rows r with min t <= r <= max t: from the smallest ceil to the largest floor
-    const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
-    const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
-    const int count = std::max(0, hi - lo + 1);
-    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 3) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
-    auto* o = ws.face_rows.data() + n_rows;
-    o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
-    o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
-    o[2] = {static_cast<std::uint32_t>(lo + 2), static_cast<std::uint32_t>(f)};
-    for(int r = lo + 3; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
-    n_rows += static_cast<std::size_t>(count);
-  });
-  group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
-  if(ws.stamp.size() != m || ws.epoch > 0xFFFFFFFFu - R) {
-    ws.stamp.assign(m, 0);
-    ws.epoch = 0;
-  }
-  // The section of face f with line t as an alpha range [l, u]; 0 when empty, else the bit mask of
-  // the edges (corner k to k+1) through which the section leaves the face.
-  auto section = [&](std::size_t f, double t, double& l, double& u) -> int {
-    const V* w[3] = {&ws.vx[static_cast<std::size_t>(links[f].v[0])], &ws.vx[static_cast<std::size_t>(links[f].v[1])],
-                     &ws.vx[static_cast<std::size_t>(links[f].v[2])]};
-    const double d[3] = {w[0]->t - t, w[1]->t - t, w[2]->t - t};
-    if(d[0] != 0 && d[1] != 0 && d[2] != 0) {
-      // The common case: one vertex alone on its side; the section joins its two edges.
-      const bool p0 = d[0] > 0, p1 = d[1] > 0, p2 = d[2] > 0;
-      if(p0 == p1 && p1 == p2) return 0;
-      const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
-      const int a = (k + 1) % 3, b = (k + 2) % 3;
-      s.segment(S::at(*w[k], *w[a], d[k] / (d[k] - d[a])), S::at(*w[k], *w[b], d[k] / (d[k] - d[b])), l, u);
-      return (1 << k) | (1 << b); // edges (k, k+1) and (k+2, k)
-    }
-    P pts[6];
-    int np = 0;
-    for(int k = 0; k < 3; ++k) {
-      const int k2 = (k + 1) % 3;
-      if(d[k] == 0) pts[np++] = S::at(*w[k]);
-      if((d[k] < 0 && d[k2] > 0) || (d[k] > 0 && d[k2] < 0)) pts[np++] = S::at(*w[k], *w[k2], d[k] / (d[k] - d[k2]));
-    }
-    if(np == 0) return 0;
-    s.polygon(pts, np, np == 3 && d[0] == 0 && d[1] == 0 && d[2] == 0, l, u);
-    int edges = 0; // corners on the line: leave through every edge the line meets
-    for(int k = 0; k < 3; ++k)
-      if(d[k] * d[(k + 1) % 3] <= 0) edges |= 1 << k;
-    return edges;
-  };
-  // 2. Per row, walk each connected piece of the section across shared edges: along a connected
-  //    curve alpha takes every value between its extremes, so a piece contributes one interval
-  //    [min l, max u] and the union needs no sorting of per-face intervals.
-  //    In the common case (no corner on the line) a face has exactly two crossing edges, so the
-  //    walk follows the section as a chain, carrying the point on the shared edge: one
-  //    interpolation per face. Faces with a corner on the line go through the general code.
-  auto edge_point = [&](std::size_t f, int k, double t) {
-    const V& i = ws.vx[static_cast<std::size_t>(links[f].v[k])];
-    const V& j = ws.vx[static_cast<std::size_t>(links[f].v[(k + 1) % 3])];
-    const double si = i.t - t, sj = j.t - t;
-    return S::at(i, j, si == sj ? 0.0 : si / (si - sj));
-  };
-  for(std::size_t r = 0; r < R; ++r) {
-    const std::uint32_t key = ++ws.epoch;
-    const double t = static_cast<double>(r);
-    double lmin = 0, umax = 0;
-    // Follows the section from face p out through its edge k_out, whose point on the line is pt.
-    auto follow = [&](std::uint32_t p, int k_out, P pt) {
-      for(;;) {
-        const Face_link& from = links[p];
-        const int nb = from.nb[k_out];
-        if(nb < 0 || ws.stamp[static_cast<std::size_t>(nb)] == key) return;
-        const std::size_t f = static_cast<std::size_t>(nb);
-        ws.stamp[f] = key;
-        const int k_in = from.edge[k_out];
-        const Face_link& fl = links[f];
-        // the next face is one of the two other neighbours: start loading both
-        prefetch(&links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 2 ? 0 : k_in + 1]))]);
-        prefetch(&links[static_cast<std::size_t>(std::max(0, fl.nb[k_in == 0 ? 2 : k_in - 1]))]);
-        const V* vr[3] = {&ws.vx[static_cast<std::size_t>(fl.v[0])], &ws.vx[static_cast<std::size_t>(fl.v[1])],
-                          &ws.vx[static_cast<std::size_t>(fl.v[2])]};
-        const double sv[3] = {vr[0]->t - t, vr[1]->t - t, vr[2]->t - t};
-        if(sv[0] == 0 || sv[1] == 0 || sv[2] == 0 || k_in < 0) { // a corner on the line: general code
-          ws.stack.push_back(static_cast<std::uint32_t>(f));
-          return;
-        }
-        // The corners' sides are per vertex, so the entry edge crosses here too and exactly one
-        // other edge does: the exit (chosen without a branch).
-        const bool p0 = sv[0] > 0, p1 = sv[1] > 0, p2 = sv[2] > 0;
-        const bool crosses[3] = {p0 != p1, p1 != p2, p2 != p0};
-        const int k1 = k_in == 2 ? 0 : k_in + 1, k2 = k1 == 2 ? 0 : k1 + 1;
-        const int k_exit = crosses[k1] ? k1 : k2;
-        const int k_next = k_exit == 2 ? 0 : k_exit + 1;
-        const double si = sv[k_exit], sj = sv[k_next];
-        const P q = S::at(*vr[k_exit], *vr[k_next], si / (si - sj));
-        double l, u;
-        s.segment(pt, q, l, u);
-        lmin = std::min(lmin, l);
-        umax = std::max(umax, u);
-        p = static_cast<std::uint32_t>(f);
-        k_out = k_exit;
-        pt = q;
-      }
-    };
-    for(std::uint32_t b = ws.count[r]; b < ws.count[r + 1]; ++b) {
-      const std::uint32_t f0 = ws.bucket[b];
-      if(ws.stamp[f0] == key) continue;
-      ws.stamp[f0] = key;
-      ws.stack.assign(1, f0);
-      lmin = std::numeric_limits<double>::infinity();
-      umax = -std::numeric_limits<double>::infinity();
-      while(!ws.stack.empty()) {
-        const std::uint32_t f = ws.stack.back();
-        ws.stack.pop_back();
-        double l, u;
-        const int edges = section(f, t, l, u);
-        if(!edges) continue;
-        lmin = std::min(lmin, l);
-        umax = std::max(umax, u);
-        for(int k = 0; k < 3; ++k)
-          if(edges >> k & 1) follow(f, k, edge_point(f, k, t));
-      }
-      if(lmin <= umax && s.keep(lmin, umax)) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, umax}});
-    }
-  }
   // 3. Group the intervals by row, sort each row by its lower ends, union.
   group_by_row(ws.entries.data(), ws.entries.size(), R, ws.count, ws.next, ws.sorted);
   for(std::size_t r = 0; r < R; ++r) {
@@ -313,6 +245,161 @@ void build_level_set_contour(const std::vector<Face_link>& links, const int* F, 
     ws.row.erase(std::unique(ws.row.begin(), ws.row.end()), ws.row.end());
     out.append_row(r, ws.row.begin(), ws.row.end());
   }
+}
+
+/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`, rows set with `ws.set_rows`) over the
+/// faces `for_each_face(fn)` visits; `F` holds the faces' corners (3 per face, as in `links`: the
+/// classification pass reads this compact copy). The section policy `S` gives the per-vertex record `S::Vertex`,
+/// the point type on a level line `S::Point`, `S::at(a, b, c)` (the point at a + c (b - a)),
+/// `S::at(a)`, `s.segment(p, q, l, u)` (the alpha range, possibly in squared units, of a segment of a
+/// level line), `s.polygon(points, n, in_plane, l, u)` (the same for a face with corners on the
+/// line: n points, or the whole triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range;
+/// false drops it), `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`.
+/// Alpha is sampled on `cols` columns over [0, alpha_scale] for the closing samples and stored
+/// divided by `alpha_scale`; `out` must have R rows.
+template <typename S, typename FaceVisitor>
+void build_level_set_contour(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const int* F, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
+                             FaceVisitor&& for_each_face, Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+  typedef typename S::Vertex V;
+  typedef typename S::Point P;
+  const std::size_t m = links.size();
+  ws.entries.clear();
+  // 1. The faces each row line crosses (most faces cross none or one), grouped by row; branch-free
+  //    in the common case (at most three rows): three candidate entries are written and the end
+  //    advances by the count.
+  std::size_t n_rows = 0;
+  const int last_row = static_cast<int>(R) - 1;
+  for_each_face([&](std::size_t f) {
+    const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
+    const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
+    const auto& a2 = ws.rows[static_cast<std::size_t>(F[3 * f + 2])];
+    // rows r with min t <= r <= max t: from the smallest ceil to the largest floor
+    const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
+    const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
+    const int count = std::max(0, hi - lo + 1);
+    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 3) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
+    auto* o = ws.face_rows.data() + n_rows;
+    o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
+    o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
+    o[2] = {static_cast<std::uint32_t>(lo + 2), static_cast<std::uint32_t>(f)};
+    for(int r = lo + 3; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
+    n_rows += static_cast<std::size_t>(count);
+  });
+  group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
+  if(ws.stamp.size() != m + 1 || ws.epoch > 0xFFFFFFFFu - R) {
+    ws.stamp.assign(m + 1, 0);
+    ws.epoch = 0;
+  }
+  // The section of face f with line t (see level_line_section).
+  auto section = [&](std::size_t f, double t, double& l, double& u) -> int {
+    const V* w[3] = {&ws.vx[static_cast<std::size_t>(links[f].v[0])], &ws.vx[static_cast<std::size_t>(links[f].v[1])],
+                     &ws.vx[static_cast<std::size_t>(links[f].v[2])]};
+    return level_line_section(s, w, t, l, u);
+  };
+  // 2. Per row, walk each connected piece of the section across shared edges: along a connected
+  //    curve alpha takes every value between its extremes, so a piece contributes one interval
+  //    [min l, max u] and the union needs no sorting of per-face intervals.
+  //    In the common case (no corner on the line) a face has exactly two crossing edges, so the
+  //    walk follows the section as a chain, carrying the point on the shared edge: one
+  //    interpolation per face. Faces with a corner on the line go through the general code.
+  auto edge_point = [&](std::size_t f, int k, double t) {
+    return level_line_point<S>(ws.vx[static_cast<std::size_t>(links[f].v[k])], ws.vx[static_cast<std::size_t>(links[f].v[(k + 1) % 3])], t);
+  };
+  const V* vx = ws.vx.data();
+  std::uint32_t* stamp = ws.stamp.data() + 1; // stamp[-1]: beyond a boundary
+  for(std::size_t r = 0; r < R; ++r) {
+    const std::uint32_t key = ++ws.epoch;
+    stamp[-1] = key;
+    const double t = static_cast<double>(r);
+    double lmin = 0, umax = 0;
+    // Follows the section from face p out through its edge k_out, whose point on the line is pt.
+    // The walk's state is the half-edge h by which it enters a face, with the records of h's
+    // origin x and target y (on opposite sides of the line). The opposite corner w lies on x's
+    // side (the section leaves through y -> w, the next half-edge) or on y's (through w -> x, the
+    // previous one).
+    auto follow = [&](std::uint32_t p, int k_out, P pt) {
+      const Face_link& from = links[p];
+      bool same_way;
+      std::int32_t h = twin_half_edge(links, p, k_out, same_way);
+      const V* x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
+      const V* y = &vx[static_cast<std::size_t>(from.v[k_out])];
+      if(same_way) std::swap(x, y);
+      double sx = x->t - t, sy = y->t - t;
+      if(sx == 0 || sy == 0) { // the next face has a corner on the line: general code
+        const std::int32_t nb = h >> 2;
+        if(stamp[nb] != key) {
+          stamp[nb] = key;
+          ws.stack.push_back(static_cast<std::uint32_t>(nb));
+        }
+        return;
+      }
+      bool moved = false;
+      const P first = pt;
+      for(;;) {
+        const std::int32_t f = h >> 2; // -1 beyond a boundary, whose stamp is the key
+        if(stamp[f] == key) break;
+        stamp[f] = key;
+        const Half_edge_link& e = half_edges[static_cast<std::size_t>(h)];
+        const V* w = &vx[static_cast<std::size_t>(e.opposite)];
+        const double sw = w->t - t;
+        if(sw == 0) { // a corner on the line: general code
+          ws.stack.push_back(static_cast<std::uint32_t>(f));
+          break;
+        }
+        const bool via_next = (sw > 0) == (sx > 0);
+        // the exit edge from its first corner a to its second b, as the face lists them
+        const V* a = via_next ? y : w;
+        const V* b = via_next ? w : x;
+        const double sa = via_next ? sy : sw, sb = via_next ? sw : sx;
+        const P q = S::at(*a, *b, sa / (sa - sb));
+        if constexpr(S::linear) { // the range of a segment is that of its end points
+          lmin = std::min(lmin, q);
+          umax = std::max(umax, q);
+        } else {
+          double l, u;
+          s.segment(pt, q, l, u);
+          lmin = std::min(lmin, l);
+          umax = std::max(umax, u);
+        }
+        // the twin runs b -> a (or a -> b when the faces disagree in orientation)
+        h = via_next ? e.next_twin : e.prev_twin;
+        const bool same = (e.flips >> (via_next ? 0 : 1)) & 1;
+        x = same ? a : b;
+        y = same ? b : a;
+        sx = same ? sa : sb;
+        sy = same ? sb : sa;
+        pt = q;
+        moved = true;
+      }
+      if constexpr(S::linear) { // the first point, left out of the steps
+        if(moved) {
+          lmin = std::min(lmin, first);
+          umax = std::max(umax, first);
+        }
+      }
+    };
+    for(std::uint32_t b = ws.count[r]; b < ws.count[r + 1]; ++b) {
+      const std::uint32_t f0 = ws.bucket[b];
+      if(stamp[f0] == key) continue;
+      stamp[f0] = key;
+      ws.stack.assign(1, f0);
+      lmin = std::numeric_limits<double>::infinity();
+      umax = -std::numeric_limits<double>::infinity();
+      while(!ws.stack.empty()) {
+        const std::uint32_t f = ws.stack.back();
+        ws.stack.pop_back();
+        double l, u;
+        const int edges = section(f, t, l, u);
+        if(!edges) continue;
+        lmin = std::min(lmin, l);
+        umax = std::max(umax, u);
+        for(int k = 0; k < 3; ++k)
+          if(edges >> k & 1) follow(f, k, edge_point(f, k, t));
+      }
+      if(lmin <= umax && s.keep(lmin, umax)) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, umax}});
+    }
+  }
+  finish_level_set_contour(s, R, cols, alpha_scale, ws, out);
 }
 
 } // namespace internal

@@ -288,6 +288,7 @@ struct Rigid_section {
   struct Point {
     double x, y;
   };
+  static constexpr bool linear = false; // the distance to the axis is not linear along a segment
   static Point at(const Vertex& a, const Vertex& b, double c) { return {a.x + c * (b.x - a.x), a.y + c * (b.y - a.y)}; }
   static Point at(const Vertex& a) { return {a.x, a.y}; }
   static double norm2(const Point& a) { return a.x * a.x + a.y * a.y; }
@@ -361,7 +362,7 @@ inline Spin_contour spin_contour(const Spin_geometry& g, const Oriented_point& o
   sec.L2 = L * L;
   sec.merge_eps = 1e-9 * sec.L2; // touching intervals (shared edge points, rounded differently) merge
   Spin_contour c(R, L);
-  build_level_set_contour(g.face_links, g.a.F.data(), sec, R, o.cols, L, [&](auto&& visit) {
+  build_level_set_contour(g.face_links, g.half_edges, g.a.F.data(), sec, R, o.cols, L, [&](auto&& visit) {
     // for_each_candidate's test, written out: through that helper the classification lambda is
     // not inlined and the contour takes about 5% longer (measured, bench_descriptors)
     if(std::sqrt(2.0) * L + g.max_face_radius >= g.bbox_diagonal)

@@ -86,6 +86,7 @@ public:
     extent = 2 * far;
     face_tree = Kd_tree<3>(std::move(centers));
     face_links = build_face_links(a);
+    half_edges = build_half_edge_links(face_links);
     vertex_tree = Kd_tree<3>(std::move(verts));
   }
 
@@ -183,6 +184,7 @@ public:
   double max_face_radius = 0; // largest distance from a face centre to its corners
   Kd_tree<3> face_tree, vertex_tree;
   std::vector<Face_link> face_links; // corners, neighbours across edges, for the contour walk
+  std::vector<Half_edge_link> half_edges; // the walk's steps
 };
 
 } // namespace internal
