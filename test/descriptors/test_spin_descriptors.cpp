@@ -264,6 +264,42 @@ TEMPLATE_TEST_CASE("Spin Contour is robust to resampling; the face-based image t
   CHECK(shapecorr::spin_image_correlation(fc, ff).first > 0.9);
 }
 
+TEMPLATE_TEST_CASE("Spin Contour walk: faces listed in inconsistent orientations give the same contour", "[descriptors][spin-contour]",
+                   test::Surface_mesh, test::Polyhedron) {
+  // The walk steps across shared edges by half-edge records; a neighbour that lists the edge the
+  // same way round (inconsistent orientation, possible in a user's face list) swaps the carried
+  // corners. Level sets do not depend on orientation: flipping every third face changes nothing
+  // but the order in which a crossing point is interpolated (last-digit differences).
+  TestType m;
+  make_bumpy_sphere(m, 3);
+  const shapecorr::internal::Indexed_mesh<TestType> im(m, CGAL::parameters::default_values());
+  shapecorr::internal::Triangle_arrays flipped = im.arrays();
+  for(Eigen::Index f = 0; f < flipped.F.rows(); f += 3) std::swap(flipped.F(f, 1), flipped.F(f, 2));
+  const shapecorr::internal::Spin_geometry ga(im.arrays()), gb(flipped);
+  std::size_t same_way = 0;
+  for(const auto& h : gb.half_edges) same_way += h.flips != 0 ? 1 : 0;
+  REQUIRE(same_way > gb.half_edges.size() / 8); // the swapped path is taken
+  for(const auto& h : ga.half_edges) REQUIRE(h.flips == 0);
+  shapecorr::internal::Spin_options o;
+  o.support = 0.6 * ga.extent;
+  o.rows = 60;
+  o.cols = 30;
+  shapecorr::internal::Spin_contour_workspace ws;
+  std::size_t points = 0;
+  for(std::size_t v = 0; v < im.arrays().number_of_vertices(); v += 37) {
+    Oriented_point op;
+    op.point = im.arrays().point(v);
+    op.axis = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
+    const shapecorr::Spin_contour ca = shapecorr::internal::spin_contour(ga, op, o, ws);
+    const shapecorr::Spin_contour cb = shapecorr::internal::spin_contour(gb, op, o, ws);
+    REQUIRE(ca.size() == cb.size());
+    for(std::size_t r = 0; r < ca.rows(); ++r) REQUIRE(ca.row_end(r) == cb.row_end(r));
+    for(std::size_t i = 0; i < ca.size(); ++i) REQUIRE(cb.alphas()[i] == Approx(ca.alphas()[i]).margin(1e-6));
+    points += ca.size();
+  }
+  REQUIRE(points > 1000);
+}
+
 TEST_CASE("contour L1 distance: zero on identical, symmetric, equal to the kd-tree version", "[descriptors][contour-distance]") {
   test::Surface_mesh m;
   make_bumpy_sphere(m, 3);

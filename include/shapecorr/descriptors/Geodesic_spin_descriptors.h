@@ -265,9 +265,8 @@ private:
   void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
   // A vertex outside the ball: beyond the last row.
   void unset(Thread_state& st, std::size_t v) const {
-    const double far = static_cast<double>(m_rows) + 2.0;
-    st.cws.vx[v] = {0.0, far};
-    st.cws.set_rows(v, far, m_rows);
+    st.cws.vx[v] = {0.0, static_cast<double>(m_rows) + 2.0};
+    st.cws.rows[v] = {{static_cast<int>(m_rows), static_cast<int>(m_rows)}}; // set_rows of that t
   }
   Spin_contour contour_of(std::size_t i, Thread_state& st) const {
     support_ball(i, st.ball, st);

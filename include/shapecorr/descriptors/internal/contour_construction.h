@@ -83,9 +83,16 @@ inline std::vector<Face_link> build_face_links(const Triangle_arrays& a) {
 /// opposite corner's vertex record.
 struct alignas(16) Half_edge_link {
   std::int32_t opposite;
-  std::int32_t next_twin, prev_twin;
-  std::int32_t flips; // bit 0 (1): the next (previous) twin runs the same way (faces oriented inconsistently)
+  std::int32_t twin[2]; // of the next half-edge, of the previous one
+  std::int32_t flips;   // bit 0 (1): twin[0] (twin[1]) runs the same way (faces oriented inconsistently)
 };
+
+// p when the mask m is all ones, q when it is zero (without a branch: the walk's choices are
+// unpredictable).
+template <typename T>
+inline const T* pick(std::uintptr_t m, const T* p, const T* q) {
+  return reinterpret_cast<const T*>((reinterpret_cast<std::uintptr_t>(p) & m) | (reinterpret_cast<std::uintptr_t>(q) & ~m));
+}
 
 // The twin of half-edge k of face f in its face (-1 when none) and whether it runs the same way.
 inline std::int32_t twin_half_edge(const std::vector<Face_link>& links, std::size_t f, int k, bool& same_way) {
@@ -105,20 +112,11 @@ inline std::vector<Half_edge_link> build_half_edge_links(const std::vector<Face_
       const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       bool same_next, same_prev;
       h.opposite = links[f].v[k2];
-      h.next_twin = twin_half_edge(links, f, k1, same_next);
-      h.prev_twin = twin_half_edge(links, f, k2, same_prev);
+      h.twin[0] = twin_half_edge(links, f, k1, same_next);
+      h.twin[1] = twin_half_edge(links, f, k2, same_prev);
       h.flips = (same_next ? 1 : 0) | (same_prev ? 2 : 0);
     }
   return he;
-}
-
-// A hint to start loading the cache line at p (no effect where the compiler has no builtin).
-inline void prefetch(const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
 }
 
 // Counting sort of (row, value) pairs by row: out holds the values grouped by row, row r in
@@ -126,12 +124,37 @@ inline void prefetch(const void* p) {
 template <typename Value>
 void group_by_row(const std::pair<std::uint32_t, Value>* in, std::size_t n, std::size_t rows, std::vector<std::uint32_t>& count,
                   std::vector<std::uint32_t>& next, std::vector<Value>& out) {
-  count.assign(rows + 1, 0u);
-  for(std::size_t i = 0; i < n; ++i) ++count[in[i].first + 1];
-  for(std::size_t r = 0; r < rows; ++r) count[r + 1] += count[r];
+  // Even and odd entries are counted and placed with separate counters: consecutive entries
+  // mostly share a row, and one counter would make every increment wait for the previous one.
+  count.assign(2 * rows + 1, 0u);
+  std::uint32_t* c0 = count.data() + 1;
+  std::uint32_t* c1 = c0 + rows;
+  std::size_t i = 0;
+  for(; i + 1 < n; i += 2) {
+    ++c0[in[i].first];
+    ++c1[in[i + 1].first];
+  }
+  if(i < n) ++c0[in[i].first];
+  // row r: the even entries from next[r], the odd ones from next[rows + r]
+  next.resize(2 * rows);
+  std::uint32_t start = 0;
+  for(std::size_t r = 0; r < rows; ++r) {
+    const std::uint32_t e = c0[r], o = c1[r];
+    next[r] = start;
+    next[rows + r] = start + e;
+    count[r] = start;
+    start += e + o;
+  }
+  count[rows] = start;
+  count.resize(rows + 1);
   out.resize(n);
-  next.assign(count.begin(), count.end() - 1);
-  for(std::size_t i = 0; i < n; ++i) out[next[in[i].first]++] = in[i].second;
+  std::uint32_t* n0 = next.data();
+  std::uint32_t* n1 = n0 + rows;
+  for(i = 0; i + 1 < n; i += 2) {
+    out[n0[in[i].first]++] = in[i].second;
+    out[n1[in[i + 1].first]++] = in[i + 1].second;
+  }
+  if(i < n) out[n0[in[i].first]++] = in[i].second;
 }
 
 /// Scratch space of one thread's contour constructions; `Vertex` is the section policy's
@@ -312,69 +335,90 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     stamp[-1] = key;
     const double t = static_cast<double>(r);
     double lmin = 0, umax = 0;
-    // Follows the section from face p out through its edge k_out, whose point on the line is pt.
-    // The walk's state is the half-edge h by which it enters a face, with the records of h's
-    // origin x and target y (on opposite sides of the line). The opposite corner w lies on x's
-    // side (the section leaves through y -> w, the next half-edge) or on y's (through w -> x, the
-    // previous one).
-    auto follow = [&](std::uint32_t p, int k_out, P pt) {
+    // A chain follows the section from face to face. Its state is the half-edge h by which it
+    // enters a face, with the records of h's origin x and target y (on opposite sides of the
+    // line). The opposite corner w lies on x's side (the section leaves through y -> w, the next
+    // half-edge) or on y's (through w -> x, the previous one).
+    struct Chain {
+      std::int32_t h;
+      const V* x;
+      const V* y;
+      double sx; // x's side of the line
+      P pt, first;
+      double lo, hi; // the range of the points it passed
+      bool moved;
+    };
+    // Starts a chain out of face p through its edge k_out, whose point on the line is pt; false
+    // when the next face has a corner on the line (pushed for the general code).
+    auto start = [&](std::uint32_t p, int k_out, P pt, Chain& c) -> bool {
       const Face_link& from = links[p];
       bool same_way;
-      std::int32_t h = twin_half_edge(links, p, k_out, same_way);
-      const V* x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
-      const V* y = &vx[static_cast<std::size_t>(from.v[k_out])];
-      if(same_way) std::swap(x, y);
-      double sx = x->t - t, sy = y->t - t;
-      if(sx == 0 || sy == 0) { // the next face has a corner on the line: general code
-        const std::int32_t nb = h >> 2;
+      c.h = twin_half_edge(links, p, k_out, same_way);
+      c.x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
+      c.y = &vx[static_cast<std::size_t>(from.v[k_out])];
+      if(same_way) std::swap(c.x, c.y);
+      c.sx = c.x->t - t;
+      const double sy = c.y->t - t;
+      c.pt = c.first = pt;
+      c.lo = std::numeric_limits<double>::infinity();
+      c.hi = -std::numeric_limits<double>::infinity();
+      c.moved = false;
+      if(c.sx == 0 || sy == 0) { // the next face has a corner on the line: general code
+        const std::int32_t nb = c.h >> 2;
         if(stamp[nb] != key) {
           stamp[nb] = key;
           ws.stack.push_back(static_cast<std::uint32_t>(nb));
         }
-        return;
+        return false;
       }
-      bool moved = false;
-      const P first = pt;
-      for(;;) {
-        const std::int32_t f = h >> 2; // -1 beyond a boundary, whose stamp is the key
-        if(stamp[f] == key) break;
-        stamp[f] = key;
-        const Half_edge_link& e = half_edges[static_cast<std::size_t>(h)];
-        const V* w = &vx[static_cast<std::size_t>(e.opposite)];
-        const double sw = w->t - t;
-        if(sw == 0) { // a corner on the line: general code
-          ws.stack.push_back(static_cast<std::uint32_t>(f));
-          break;
-        }
-        const bool via_next = (sw > 0) == (sx > 0);
-        // the exit edge from its first corner a to its second b, as the face lists them
-        const V* a = via_next ? y : w;
-        const V* b = via_next ? w : x;
-        const double sa = via_next ? sy : sw, sb = via_next ? sw : sx;
-        const P q = S::at(*a, *b, sa / (sa - sb));
-        if constexpr(S::linear) { // the range of a segment is that of its end points
-          lmin = std::min(lmin, q);
-          umax = std::max(umax, q);
-        } else {
-          double l, u;
-          s.segment(pt, q, l, u);
-          lmin = std::min(lmin, l);
-          umax = std::max(umax, u);
-        }
-        // the twin runs b -> a (or a -> b when the faces disagree in orientation)
-        h = via_next ? e.next_twin : e.prev_twin;
-        const bool same = (e.flips >> (via_next ? 0 : 1)) & 1;
-        x = same ? a : b;
-        y = same ? b : a;
-        sx = same ? sa : sb;
-        sy = same ? sb : sa;
-        pt = q;
-        moved = true;
+      return true;
+    };
+    // One step of a chain into the face its half-edge h enters; false when it stops there.
+    auto step = [&](Chain& c) -> bool {
+      const std::int32_t f = c.h >> 2; // -1 beyond a boundary, whose stamp is the key
+      if(stamp[f] == key) return false;
+      stamp[f] = key;
+      const Half_edge_link& e = half_edges[static_cast<std::size_t>(c.h)];
+      const V* w = &vx[static_cast<std::size_t>(e.opposite)];
+      const double sw = w->t - t;
+      if(sw == 0) { // a corner on the line: general code
+        ws.stack.push_back(static_cast<std::uint32_t>(f));
+        return false;
       }
+      const int via_prev = (sw > 0) != (c.sx > 0);
+      const std::uintptr_t m = std::uintptr_t(0) - static_cast<std::uintptr_t>(via_prev);
+      // the exit edge from its first corner a to its second b, as the face lists them: y -> w
+      // (the next half-edge) or w -> x (the previous one)
+      const V* a = pick(m, w, c.y);
+      const V* b = pick(m, c.x, w);
+      const double sa = a->t - t, sb = b->t - t;
+      const P q = S::at(*a, *b, sa / (sa - sb));
+      if constexpr(S::linear) { // the range of a segment is that of its end points
+        c.lo = std::min(c.lo, q);
+        c.hi = std::max(c.hi, q);
+      } else {
+        double l, u;
+        s.segment(c.pt, q, l, u);
+        c.lo = std::min(c.lo, l);
+        c.hi = std::max(c.hi, u);
+      }
+      // the twin runs b -> a (or a -> b when the faces disagree in orientation)
+      c.h = e.twin[via_prev];
+      const std::uintptr_t same = std::uintptr_t(0) - static_cast<std::uintptr_t>((e.flips >> via_prev) & 1);
+      c.x = pick(same, a, b);
+      c.y = pick(same, b, a);
+      c.sx = c.x->t - t;
+      c.pt = q;
+      c.moved = true;
+      return true;
+    };
+    auto close = [&](const Chain& c) {
+      lmin = std::min(lmin, c.lo);
+      umax = std::max(umax, c.hi);
       if constexpr(S::linear) { // the first point, left out of the steps
-        if(moved) {
-          lmin = std::min(lmin, first);
-          umax = std::max(umax, first);
+        if(c.moved) {
+          lmin = std::min(lmin, c.first);
+          umax = std::max(umax, c.first);
         }
       }
     };
@@ -393,8 +437,32 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
         if(!edges) continue;
         lmin = std::min(lmin, l);
         umax = std::max(umax, u);
+        // The section leaves the face through two edges (more with a corner on the line): the
+        // two chains run interleaved, so that their dependent loads overlap; on a closed piece
+        // they meet half-way.
+        Chain ch[3];
+        int n = 0;
         for(int k = 0; k < 3; ++k)
-          if(edges >> k & 1) follow(f, k, edge_point(f, k, t));
+          if(edges >> k & 1 && start(f, k, edge_point(f, k, t), ch[n])) ++n;
+        if(n == 2) { // (on local copies, which the compiler keeps in registers)
+          Chain c0 = ch[0], c1 = ch[1];
+          bool go0 = true, go1 = true;
+          while(go0 && go1) {
+            go0 = step(c0);
+            go1 = step(c1);
+          }
+          while(go0) go0 = step(c0);
+          while(go1) go1 = step(c1);
+          close(c0);
+          close(c1);
+        } else {
+          for(int i = 0; i < n; ++i) {
+            Chain c = ch[i];
+            while(step(c)) {
+            }
+            close(c);
+          }
+        }
       }
       if(lmin <= umax && s.keep(lmin, umax)) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, umax}});
     }
