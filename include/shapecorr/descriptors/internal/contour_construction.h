@@ -244,25 +244,31 @@ void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, doubl
     }
     for(auto& iv : merged) iv = {s.finish(iv.first), s.finish(iv.second)};
   }
-  // 4. End points, and the closing samples of I_r \ I_{r-1} and I_r \ I_{r+1} on the column grid.
-  auto contains = [&](long row, double a) {
-    if(row < 0 || row >= static_cast<long>(R)) return false;
-    const auto& iv = ws.merged[static_cast<std::size_t>(row)];
-    auto it = std::upper_bound(iv.begin(), iv.end(), std::make_pair(a, std::numeric_limits<double>::infinity()));
-    return it != iv.begin() && a <= std::prev(it)->second;
-  };
+  // 4. End points, and the closing samples of I_r \ I_{r-1} and I_r \ I_{r+1} on the column grid,
+  //    pushed in increasing order (the sort below then finds them in place). A row's samples
+  //    increase, so the intervals of the rows above and below that may contain them are found
+  //    by two cursors instead of binary searches.
   const double dc = alpha_scale / static_cast<double>(cols);
+  static const std::vector<std::pair<double, double>> none;
   for(std::size_t r = 0; r < R; ++r) {
     ws.row.clear();
+    const auto& above = r > 0 ? ws.merged[r - 1] : none;
+    const auto& below = r + 1 < R ? ws.merged[r + 1] : none;
+    std::size_t ia = 0, ib = 0;
+    auto contains = [](const std::vector<std::pair<double, double>>& iv, std::size_t& i, double a) {
+      while(i < iv.size() && iv[i].second < a) ++i;
+      return i < iv.size() && iv[i].first <= a;
+    };
     for(const auto& seg : ws.merged[r]) {
       ws.row.push_back(static_cast<float>(seg.first / alpha_scale));
-      if(seg.second > seg.first) ws.row.push_back(static_cast<float>(seg.second / alpha_scale));
       const long c0 = std::max(0L, static_cast<long>(std::ceil(seg.first / dc - 0.5)));
       const long c1 = std::min(static_cast<long>(cols) - 1, static_cast<long>(std::floor(seg.second / dc - 0.5)));
       for(long k = c0; k <= c1; ++k) {
         const double a = (static_cast<double>(k) + 0.5) * dc;
-        if(!contains(static_cast<long>(r) - 1, a) || !contains(static_cast<long>(r) + 1, a)) ws.row.push_back(static_cast<float>(a / alpha_scale));
+        const bool in_above = contains(above, ia, a), in_below = contains(below, ib, a);
+        if(!in_above || !in_below) ws.row.push_back(static_cast<float>(a / alpha_scale));
       }
+      if(seg.second > seg.first) ws.row.push_back(static_cast<float>(seg.second / alpha_scale));
     }
     std::sort(ws.row.begin(), ws.row.end());
     ws.row.erase(std::unique(ws.row.begin(), ws.row.end()), ws.row.end());
@@ -287,11 +293,13 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
   typedef typename S::Point P;
   const std::size_t m = links.size();
   ws.entries.clear();
-  // 1. The faces each row line crosses (most faces cross none or one), grouped by row; branch-free
-  //    in the common case (at most three rows): three candidate entries are written and the end
-  //    advances by the count.
+  // 1. The faces each row line crosses (most faces cross none to three), grouped by row;
+  //    branch-free unless a face spans more than kCandidates rows: that many candidate entries are
+  //    written and the end advances by the count (a loop over the rows, whose trip count varies,
+  //    mispredicted about once per face with long edges).
   std::size_t n_rows = 0;
   const int last_row = static_cast<int>(R) - 1;
+  constexpr int kCandidates = 6;
   for_each_face([&](std::size_t f) {
     const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
     const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
@@ -300,12 +308,10 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     const int lo = std::max(0, std::min({a0[1], a1[1], a2[1]}));
     const int hi = std::min(last_row, std::max({a0[0], a1[0], a2[0]}));
     const int count = std::max(0, hi - lo + 1);
-    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + 3) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
+    if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + kCandidates) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
     auto* o = ws.face_rows.data() + n_rows;
-    o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(f)};
-    o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(f)};
-    o[2] = {static_cast<std::uint32_t>(lo + 2), static_cast<std::uint32_t>(f)};
-    for(int r = lo + 3; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
+    for(int j = 0; j < kCandidates; ++j) o[j] = {static_cast<std::uint32_t>(lo + j), static_cast<std::uint32_t>(f)};
+    for(int r = lo + kCandidates; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
     n_rows += static_cast<std::size_t>(count);
   });
   group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
@@ -329,6 +335,7 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     return level_line_point<S>(ws.vx[static_cast<std::size_t>(links[f].v[k])], ws.vx[static_cast<std::size_t>(links[f].v[(k + 1) % 3])], t);
   };
   const V* vx = ws.vx.data();
+  const Half_edge_link* he = half_edges.data();
   std::uint32_t* stamp = ws.stamp.data() + 1; // stamp[-1]: beyond a boundary
   for(std::size_t r = 0; r < R; ++r) {
     const std::uint32_t key = ++ws.epoch;
@@ -343,10 +350,9 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       std::int32_t h;
       const V* x;
       const V* y;
-      double sx; // x's side of the line
+      int x_above; // x lies above the line (consistent orientations keep it there)
       P pt, first;
-      double lo, hi; // the range of the points it passed
-      bool moved;
+      double lo, hi; // the range of the points it passed (empty until it moves)
     };
     // Starts a chain out of face p through its edge k_out, whose point on the line is pt; false
     // when the next face has a corner on the line (pushed for the general code).
@@ -357,13 +363,12 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       c.x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
       c.y = &vx[static_cast<std::size_t>(from.v[k_out])];
       if(same_way) std::swap(c.x, c.y);
-      c.sx = c.x->t - t;
-      const double sy = c.y->t - t;
+      const double sx = c.x->t - t, sy = c.y->t - t;
+      c.x_above = sx > 0 ? 1 : 0;
       c.pt = c.first = pt;
       c.lo = std::numeric_limits<double>::infinity();
       c.hi = -std::numeric_limits<double>::infinity();
-      c.moved = false;
-      if(c.sx == 0 || sy == 0) { // the next face has a corner on the line: general code
+      if(sx == 0 || sy == 0) { // the next face has a corner on the line: general code
         const std::int32_t nb = c.h >> 2;
         if(stamp[nb] != key) {
           stamp[nb] = key;
@@ -378,14 +383,14 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       const std::int32_t f = c.h >> 2; // -1 beyond a boundary, whose stamp is the key
       if(stamp[f] == key) return false;
       stamp[f] = key;
-      const Half_edge_link& e = half_edges[static_cast<std::size_t>(c.h)];
+      const Half_edge_link& e = he[c.h];
       const V* w = &vx[static_cast<std::size_t>(e.opposite)];
       const double sw = w->t - t;
       if(sw == 0) { // a corner on the line: general code
         ws.stack.push_back(static_cast<std::uint32_t>(f));
         return false;
       }
-      const int via_prev = (sw > 0) != (c.sx > 0);
+      const int via_prev = (sw > 0 ? 1 : 0) ^ c.x_above;
       const std::uintptr_t m = std::uintptr_t(0) - static_cast<std::uintptr_t>(via_prev);
       // the exit edge from its first corner a to its second b, as the face lists them: y -> w
       // (the next half-edge) or w -> x (the previous one)
@@ -402,21 +407,23 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
         c.lo = std::min(c.lo, l);
         c.hi = std::max(c.hi, u);
       }
-      // the twin runs b -> a (or a -> b when the faces disagree in orientation)
-      c.h = e.twin[via_prev];
-      const std::uintptr_t same = std::uintptr_t(0) - static_cast<std::uintptr_t>((e.flips >> via_prev) & 1);
+      // The twin runs b -> a (or a -> b when the faces disagree in orientation); b lies on x's
+      // side, a on y's. Both twins were loaded with the record: the choice is a mask, not a load.
+      const std::int32_t mh = -static_cast<std::int32_t>(via_prev);
+      c.h = (e.twin[1] & mh) | (e.twin[0] & ~mh);
+      const int flip = (e.flips >> via_prev) & 1;
+      const std::uintptr_t same = std::uintptr_t(0) - static_cast<std::uintptr_t>(flip);
       c.x = pick(same, a, b);
       c.y = pick(same, b, a);
-      c.sx = c.x->t - t;
+      c.x_above ^= flip;
       c.pt = q;
-      c.moved = true;
       return true;
     };
     auto close = [&](const Chain& c) {
       lmin = std::min(lmin, c.lo);
       umax = std::max(umax, c.hi);
       if constexpr(S::linear) { // the first point, left out of the steps
-        if(c.moved) {
+        if(c.lo <= c.hi) { // it moved
           lmin = std::min(lmin, c.first);
           umax = std::max(umax, c.first);
         }
