@@ -411,11 +411,14 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       // side, a on y's. Both twins were loaded with the record: the choice is a mask, not a load.
       const std::int32_t mh = -static_cast<std::int32_t>(via_prev);
       c.h = (e.twin[1] & mh) | (e.twin[0] & ~mh);
-      const int flip = (e.flips >> via_prev) & 1;
-      const std::uintptr_t same = std::uintptr_t(0) - static_cast<std::uintptr_t>(flip);
-      c.x = pick(same, a, b);
-      c.y = pick(same, b, a);
-      c.x_above ^= flip;
+      if((e.flips >> via_prev) & 1) { // rare: a face of the other orientation
+        c.x = a;
+        c.y = b;
+        c.x_above ^= 1;
+      } else {
+        c.x = b;
+        c.y = a;
+      }
       c.pt = q;
       return true;
     };
