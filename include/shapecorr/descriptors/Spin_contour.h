@@ -54,6 +54,8 @@ public:
       for(std::size_t i = row_begin(r); i < row_end(r); ++i) p.push_back({static_cast<double>(m_alpha[i]), beta(r)});
     return p;
   }
+  /// Reserves room for `points` points in all (appending then does not reallocate).
+  void reserve(std::size_t points) { m_alpha.reserve(points); }
   /// Appends the (sorted) alphas of the next row; rows are appended in order 0, 1, ...
   template <typename Iterator>
   void append_row(std::size_t r, Iterator first, Iterator last) {

@@ -173,6 +173,7 @@ struct Contour_workspace {
   std::vector<std::pair<double, double>> sorted;           // intervals grouped by row
   std::vector<std::vector<std::pair<double, double>>> merged;
   std::vector<float> row;
+  std::vector<std::size_t> row_end;
 
   void resize(std::size_t vertices) {
     vx.resize(vertices);
@@ -250,8 +251,9 @@ void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, doubl
   //    by two cursors instead of binary searches.
   const double dc = alpha_scale / static_cast<double>(cols);
   static const std::vector<std::pair<double, double>> none;
+  ws.row.clear(); // all rows' points, row r in [row_end[r], row_end[r + 1])
+  ws.row_end.assign(1, 0);
   for(std::size_t r = 0; r < R; ++r) {
-    ws.row.clear();
     const auto& above = r > 0 ? ws.merged[r - 1] : none;
     const auto& below = r + 1 < R ? ws.merged[r + 1] : none;
     std::size_t ia = 0, ib = 0;
@@ -270,10 +272,13 @@ void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, doubl
       }
       if(seg.second > seg.first) ws.row.push_back(static_cast<float>(seg.second / alpha_scale));
     }
-    std::sort(ws.row.begin(), ws.row.end());
-    ws.row.erase(std::unique(ws.row.begin(), ws.row.end()), ws.row.end());
-    out.append_row(r, ws.row.begin(), ws.row.end());
+    std::sort(ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end.back()), ws.row.end());
+    ws.row.erase(std::unique(ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end.back()), ws.row.end()), ws.row.end());
+    ws.row_end.push_back(ws.row.size());
   }
+  // one allocation for the contour's points
+  out.reserve(ws.row.size());
+  for(std::size_t r = 0; r < R; ++r) out.append_row(r, ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end[r]), ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end[r + 1]));
 }
 
 /// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`, rows set with `ws.set_rows`) over the
