@@ -83,8 +83,9 @@ inline std::vector<Face_link> build_face_links(const Triangle_arrays& a) {
 /// opposite corner's vertex record.
 struct alignas(16) Half_edge_link {
   std::int32_t opposite;
-  std::int32_t twin[2]; // of the next half-edge, of the previous one
-  std::int32_t flips;   // bit 0 (1): twin[0] (twin[1]) runs the same way (faces oriented inconsistently)
+  std::int32_t next_twin; // the twin of the next half-edge
+  std::int32_t twins_xor; // next_twin ^ the twin of the previous half-edge (a step picks one by a mask)
+  std::int32_t flips;     // bit 0 (1): the next (previous) twin runs the same way (faces oriented inconsistently)
 };
 
 // p when the mask m is all ones, q when it is zero (without a branch: the walk's choices are
@@ -112,8 +113,8 @@ inline std::vector<Half_edge_link> build_half_edge_links(const std::vector<Face_
       const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       bool same_next, same_prev;
       h.opposite = links[f].v[k2];
-      h.twin[0] = twin_half_edge(links, f, k1, same_next);
-      h.twin[1] = twin_half_edge(links, f, k2, same_prev);
+      h.next_twin = twin_half_edge(links, f, k1, same_next);
+      h.twins_xor = h.next_twin ^ twin_half_edge(links, f, k2, same_prev);
       h.flips = (same_next ? 1 : 0) | (same_prev ? 2 : 0);
     }
   return he;
@@ -414,8 +415,7 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       }
       // The twin runs b -> a (or a -> b when the faces disagree in orientation); b lies on x's
       // side, a on y's. Both twins were loaded with the record: the choice is a mask, not a load.
-      const std::int32_t mh = -static_cast<std::int32_t>(via_prev);
-      c.h = (e.twin[1] & mh) | (e.twin[0] & ~mh);
+      c.h = e.next_twin ^ (e.twins_xor & -static_cast<std::int32_t>(via_prev));
       if((e.flips >> via_prev) & 1) { // rare: a face of the other orientation
         c.x = a;
         c.y = b;
