@@ -167,9 +167,9 @@ struct Contour_workspace {
   std::vector<std::pair<std::uint32_t, std::pair<double, double>>> entries; // (row, alpha interval)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> face_rows; // (row, face) of every face a row line crosses
   std::vector<std::uint32_t> bucket;                       // faces grouped by row
-  std::vector<std::uint32_t> stamp;                        // per face: the row walk that visited it last
+  std::vector<std::uint32_t> stamp;                        // per face, twice (even, odd rows; each after a boundary slot): the row walk that visited it last
   std::uint32_t epoch = 0;
-  std::vector<std::uint32_t> stack;
+  std::vector<std::uint32_t> stack, stack2; // faces for the general code, of the two rows walked together
   std::vector<std::uint32_t> count, next;
   std::vector<std::pair<double, double>> sorted;           // intervals grouped by row
   std::vector<std::vector<std::pair<double, double>>> merged;
@@ -321,8 +321,8 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     n_rows += static_cast<std::size_t>(count);
   });
   group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
-  if(ws.stamp.size() != m + 1 || ws.epoch > 0xFFFFFFFFu - R) {
-    ws.stamp.assign(m + 1, 0);
+  if(ws.stamp.size() != 2 * (m + 1) || ws.epoch > 0xFFFFFFFFu - R) {
+    ws.stamp.assign(2 * (m + 1), 0);
     ws.epoch = 0;
   }
   // The section of face f with line t (see level_line_section).
@@ -342,144 +342,230 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
   };
   const V* vx = ws.vx.data();
   const Half_edge_link* he = half_edges.data();
-  std::uint32_t* stamp = ws.stamp.data() + 1; // stamp[-1]: beyond a boundary
-  for(std::size_t r = 0; r < R; ++r) {
-    const std::uint32_t key = ++ws.epoch;
-    stamp[-1] = key;
-    const double t = static_cast<double>(r);
-    double lmin = 0, umax = 0;
-    // A chain follows the section from face to face. Its state is the half-edge h by which it
-    // enters a face, with the records of h's origin x and target y (on opposite sides of the
-    // line). The opposite corner w lies on x's side (the section leaves through y -> w, the next
-    // half-edge) or on y's (through w -> x, the previous one).
-    struct Chain {
-      std::int32_t h;
-      const V* x;
-      const V* y;
-      int x_above; // x lies above the line (consistent orientations keep it there)
-      P pt, first;
-      double lo, hi; // the range of the points it passed (empty until it moves)
-    };
-    // Starts a chain out of face p through its edge k_out, whose point on the line is pt; false
-    // when the next face has a corner on the line (pushed for the general code).
-    auto start = [&](std::uint32_t p, int k_out, P pt, Chain& c) -> bool {
-      const Face_link& from = links[p];
-      bool same_way;
-      c.h = twin_half_edge(links, p, k_out, same_way);
-      c.x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
-      c.y = &vx[static_cast<std::size_t>(from.v[k_out])];
-      if(same_way) std::swap(c.x, c.y);
-      const double sx = c.x->t - t, sy = c.y->t - t;
-      c.x_above = sx > 0 ? 1 : 0;
-      c.pt = c.first = pt;
-      c.lo = std::numeric_limits<double>::infinity();
-      c.hi = -std::numeric_limits<double>::infinity();
-      if(sx == 0 || sy == 0) { // the next face has a corner on the line: general code
-        const std::int32_t nb = c.h >> 2;
-        if(stamp[nb] != key) {
-          stamp[nb] = key;
-          ws.stack.push_back(static_cast<std::uint32_t>(nb));
+  // Rows are walked two at a time (r, r + 1), each with its own stamps (a face may meet both), so
+  // that four chains run interleaved.
+  struct Row {
+    double t;
+    std::uint32_t key;
+    std::uint32_t* stamp; // stamp[-1]: beyond a boundary
+    std::vector<std::uint32_t>* stack;
+    std::uint32_t next, end; // the row's seeds still to try: bucket[next, end)
+    double lmin, umax;       // the range of the current piece
+  };
+  // A chain follows the section from face to face. Its state is the half-edge h by which it
+  // enters a face, with the records of h's origin x and target y (on opposite sides of the
+  // line). The opposite corner w lies on x's side (the section leaves through y -> w, the next
+  // half-edge) or on y's (through w -> x, the previous one).
+  struct Chain {
+    std::int32_t h;
+    const V* x;
+    const V* y;
+    int x_above; // x lies above the line (consistent orientations keep it there)
+    P pt, first;
+    double lo, hi; // the range of the points it passed (empty until it moves)
+  };
+  // Starts a chain out of face p through its edge k_out, whose point on the line is pt; false
+  // when the next face has a corner on the line (pushed for the general code).
+  auto start = [&](Row& w, std::uint32_t p, int k_out, P pt, Chain& c) -> bool {
+    const Face_link& from = links[p];
+    bool same_way;
+    c.h = twin_half_edge(links, p, k_out, same_way);
+    c.x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
+    c.y = &vx[static_cast<std::size_t>(from.v[k_out])];
+    if(same_way) std::swap(c.x, c.y);
+    const double sx = c.x->t - w.t, sy = c.y->t - w.t;
+    c.x_above = sx > 0 ? 1 : 0;
+    c.pt = c.first = pt;
+    c.lo = std::numeric_limits<double>::infinity();
+    c.hi = -std::numeric_limits<double>::infinity();
+    if(sx == 0 || sy == 0) { // the next face has a corner on the line: general code
+      const std::int32_t nb = c.h >> 2;
+      if(w.stamp[nb] != w.key) {
+        w.stamp[nb] = w.key;
+        w.stack->push_back(static_cast<std::uint32_t>(nb));
+      }
+      return false;
+    }
+    return true;
+  };
+  // One step of a chain into the face its half-edge h enters; false when it stops there.
+  auto step = [&](Row& w, Chain& c) -> bool {
+    const std::int32_t f = c.h >> 2; // -1 beyond a boundary, whose stamp is the key
+    if(w.stamp[f] == w.key) return false;
+    w.stamp[f] = w.key;
+    const Half_edge_link& e = he[c.h];
+    const V* o = &vx[static_cast<std::size_t>(e.opposite)];
+    const double so = o->t - w.t;
+    if(so == 0) { // a corner on the line: general code
+      w.stack->push_back(static_cast<std::uint32_t>(f));
+      return false;
+    }
+    const int via_prev = (so > 0 ? 1 : 0) ^ c.x_above;
+    const std::uintptr_t mask = std::uintptr_t(0) - static_cast<std::uintptr_t>(via_prev);
+    // the exit edge from its first corner a to its second b, as the face lists them: y -> o
+    // (the next half-edge) or o -> x (the previous one)
+    const V* a = pick(mask, o, c.y);
+    const V* b = pick(mask, c.x, o);
+    const double sa = a->t - w.t, sb = b->t - w.t;
+    const P q = S::at(*a, *b, sa / (sa - sb));
+    if constexpr(S::linear) { // the range of a segment is that of its end points
+      c.lo = std::min(c.lo, q);
+      c.hi = std::max(c.hi, q);
+    } else {
+      double l, u;
+      s.segment(c.pt, q, l, u);
+      c.lo = std::min(c.lo, l);
+      c.hi = std::max(c.hi, u);
+    }
+    // The twin runs b -> a (or a -> b when the faces disagree in orientation); b lies on x's
+    // side, a on y's. Both twins were loaded with the record: the choice is a mask, not a load.
+    c.h = e.next_twin ^ (e.twins_xor & -static_cast<std::int32_t>(via_prev));
+    if((e.flips >> via_prev) & 1) { // rare: a face of the other orientation
+      c.x = a;
+      c.y = b;
+      c.x_above ^= 1;
+    } else {
+      c.x = b;
+      c.y = a;
+    }
+    c.pt = q;
+    return true;
+  };
+  auto close = [&](Row& w, const Chain& c) {
+    w.lmin = std::min(w.lmin, c.lo);
+    w.umax = std::max(w.umax, c.hi);
+    if constexpr(S::linear) { // the first point, left out of the steps
+      if(c.lo <= c.hi) { // it moved
+        w.lmin = std::min(w.lmin, c.first);
+        w.umax = std::max(w.umax, c.first);
+      }
+    }
+  };
+  // The section of face f: its range, and the chains out of it (false: none to start).
+  auto open = [&](Row& w, std::uint32_t f, Chain* ch, int& n) -> bool {
+    double l, u;
+    const int edges = section(f, w.t, l, u);
+    n = 0;
+    if(!edges) return false;
+    w.lmin = std::min(w.lmin, l);
+    w.umax = std::max(w.umax, u);
+    for(int k = 0; k < 3; ++k)
+      if(edges >> k & 1 && start(w, f, k, edge_point(f, k, w.t), ch[n])) ++n;
+    return n > 0;
+  };
+  // The rest of a piece, one chain at a time: the chains started, then the faces with a corner on
+  // the line (the general code) and the chains out of them; then the piece's interval.
+  auto finish_piece = [&](Row& w, std::uint32_t r, Chain* ch, int n) {
+    for(;;) {
+      for(int i = 0; i < n; ++i) {
+        while(step(w, ch[i])) {
         }
-        return false;
+        close(w, ch[i]);
       }
-      return true;
-    };
-    // One step of a chain into the face its half-edge h enters; false when it stops there.
-    auto step = [&](Chain& c) -> bool {
-      const std::int32_t f = c.h >> 2; // -1 beyond a boundary, whose stamp is the key
-      if(stamp[f] == key) return false;
-      stamp[f] = key;
-      const Half_edge_link& e = he[c.h];
-      const V* w = &vx[static_cast<std::size_t>(e.opposite)];
-      const double sw = w->t - t;
-      if(sw == 0) { // a corner on the line: general code
-        ws.stack.push_back(static_cast<std::uint32_t>(f));
-        return false;
+      n = 0;
+      if(w.stack->empty()) break;
+      const std::uint32_t f = w.stack->back();
+      w.stack->pop_back();
+      open(w, f, ch, n);
+    }
+    if(w.lmin <= w.umax && s.keep(w.lmin, w.umax)) ws.entries.push_back({r, {w.lmin, w.umax}});
+  };
+  // The next piece of row w whose seed face has two chains out of it (the common case), started
+  // in ch; pieces of the general kind met on the way are walked on the spot. False: no more.
+  auto next_piece = [&](Row& w, std::uint32_t r, Chain* ch) -> bool {
+    while(w.next < w.end) {
+      const std::uint32_t f0 = ws.bucket[w.next++];
+      if(w.stamp[f0] == w.key) continue;
+      w.stamp[f0] = w.key;
+      w.lmin = std::numeric_limits<double>::infinity();
+      w.umax = -std::numeric_limits<double>::infinity();
+      int n = 0;
+      open(w, f0, ch, n);
+      if(n == 2 && w.stack->empty()) return true;
+      finish_piece(w, r, ch, n);
+    }
+    return false;
+  };
+  for(std::size_t r0 = 0; r0 < R; r0 += 2) {
+    Row rows[2];
+    const std::size_t nr = r0 + 1 < R ? 2 : 1;
+    for(std::size_t j = 0; j < nr; ++j) {
+      Row& w = rows[j];
+      w.t = static_cast<double>(r0 + j);
+      w.key = ++ws.epoch;
+      w.stamp = ws.stamp.data() + 1 + j * (m + 1);
+      w.stamp[-1] = w.key;
+      w.stack = j == 0 ? &ws.stack : &ws.stack2;
+      w.stack->clear();
+      w.next = ws.count[r0 + j];
+      w.end = ws.count[r0 + j + 1];
+    }
+    const std::uint32_t r_0 = static_cast<std::uint32_t>(r0), r_1 = static_cast<std::uint32_t>(r0 + 1);
+    Chain a[3], b[3];
+    bool more_a = next_piece(rows[0], r_0, a), more_b = nr == 2 && next_piece(rows[1], r_1, b);
+    while(more_a && more_b) {
+      // four chains interleaved, so that their dependent loads overlap; the two of a closed
+      // piece meet half-way
+      Chain a0 = a[0], a1 = a[1], b0 = b[0], b1 = b[1]; // (local copies: kept in registers)
+      bool ga0 = true, ga1 = true, gb0 = true, gb1 = true;
+      while(ga0 && ga1 && gb0 && gb1) {
+        ga0 = step(rows[0], a0);
+        ga1 = step(rows[0], a1);
+        gb0 = step(rows[1], b0);
+        gb1 = step(rows[1], b1);
       }
-      const int via_prev = (sw > 0 ? 1 : 0) ^ c.x_above;
-      const std::uintptr_t m = std::uintptr_t(0) - static_cast<std::uintptr_t>(via_prev);
-      // the exit edge from its first corner a to its second b, as the face lists them: y -> w
-      // (the next half-edge) or w -> x (the previous one)
-      const V* a = pick(m, w, c.y);
-      const V* b = pick(m, c.x, w);
-      const double sa = a->t - t, sb = b->t - t;
-      const P q = S::at(*a, *b, sa / (sa - sb));
-      if constexpr(S::linear) { // the range of a segment is that of its end points
-        c.lo = std::min(c.lo, q);
-        c.hi = std::max(c.hi, q);
-      } else {
-        double l, u;
-        s.segment(c.pt, q, l, u);
-        c.lo = std::min(c.lo, l);
-        c.hi = std::max(c.hi, u);
-      }
-      // The twin runs b -> a (or a -> b when the faces disagree in orientation); b lies on x's
-      // side, a on y's. Both twins were loaded with the record: the choice is a mask, not a load.
-      c.h = e.next_twin ^ (e.twins_xor & -static_cast<std::int32_t>(via_prev));
-      if((e.flips >> via_prev) & 1) { // rare: a face of the other orientation
-        c.x = a;
-        c.y = b;
-        c.x_above ^= 1;
-      } else {
-        c.x = b;
-        c.y = a;
-      }
-      c.pt = q;
-      return true;
-    };
-    auto close = [&](const Chain& c) {
-      lmin = std::min(lmin, c.lo);
-      umax = std::max(umax, c.hi);
-      if constexpr(S::linear) { // the first point, left out of the steps
-        if(c.lo <= c.hi) { // it moved
-          lmin = std::min(lmin, c.first);
-          umax = std::max(umax, c.first);
-        }
-      }
-    };
-    for(std::uint32_t b = ws.count[r]; b < ws.count[r + 1]; ++b) {
-      const std::uint32_t f0 = ws.bucket[b];
-      if(stamp[f0] == key) continue;
-      stamp[f0] = key;
-      ws.stack.assign(1, f0);
-      lmin = std::numeric_limits<double>::infinity();
-      umax = -std::numeric_limits<double>::infinity();
-      while(!ws.stack.empty()) {
-        const std::uint32_t f = ws.stack.back();
-        ws.stack.pop_back();
-        double l, u;
-        const int edges = section(f, t, l, u);
-        if(!edges) continue;
-        lmin = std::min(lmin, l);
-        umax = std::max(umax, u);
-        // The section leaves the face through two edges (more with a corner on the line): the
-        // two chains run interleaved, so that their dependent loads overlap; on a closed piece
-        // they meet half-way.
-        Chain ch[3];
-        int n = 0;
-        for(int k = 0; k < 3; ++k)
-          if(edges >> k & 1 && start(f, k, edge_point(f, k, t), ch[n])) ++n;
-        if(n == 2) { // (on local copies, which the compiler keeps in registers)
-          Chain c0 = ch[0], c1 = ch[1];
-          bool go0 = true, go1 = true;
-          while(go0 && go1) {
-            go0 = step(c0);
-            go1 = step(c1);
-          }
-          while(go0) go0 = step(c0);
-          while(go1) go1 = step(c1);
-          close(c0);
-          close(c1);
+      if(!ga0 || !ga1) { // piece a is done or nearly: finish it, go on with b
+        while(ga0) ga0 = step(rows[0], a0);
+        while(ga1) ga1 = step(rows[0], a1);
+        close(rows[0], a0);
+        close(rows[0], a1);
+        finish_piece(rows[0], r_0, a, 0);
+        b[0] = b0;
+        b[1] = b1;
+        if(!gb0 || !gb1) { // b as well
+          while(gb0) gb0 = step(rows[1], b0);
+          while(gb1) gb1 = step(rows[1], b1);
+          close(rows[1], b0);
+          close(rows[1], b1);
+          finish_piece(rows[1], r_1, b, 0);
+          more_b = next_piece(rows[1], r_1, b);
         } else {
-          for(int i = 0; i < n; ++i) {
-            Chain c = ch[i];
-            while(step(c)) {
-            }
-            close(c);
-          }
+          // b continues: its chains are resumed with the next piece of a
+          b[0] = b0;
+          b[1] = b1;
         }
+        more_a = next_piece(rows[0], r_0, a);
+      } else { // piece b is done or nearly
+        while(gb0) gb0 = step(rows[1], b0);
+        while(gb1) gb1 = step(rows[1], b1);
+        close(rows[1], b0);
+        close(rows[1], b1);
+        finish_piece(rows[1], r_1, b, 0);
+        a[0] = a0;
+        a[1] = a1;
+        more_b = next_piece(rows[1], r_1, b);
       }
-      if(lmin <= umax && s.keep(lmin, umax)) ws.entries.push_back({static_cast<std::uint32_t>(r), {lmin, umax}});
+    }
+    // one row left: its pieces with two chains interleaved
+    for(std::size_t j = 0; j < nr; ++j) {
+      Row& w = rows[j];
+      Chain* ch = j == 0 ? a : b;
+      const std::uint32_t r = j == 0 ? r_0 : r_1;
+      bool more = j == 0 ? more_a : more_b;
+      while(more) {
+        Chain c0 = ch[0], c1 = ch[1];
+        bool g0 = true, g1 = true;
+        while(g0 && g1) {
+          g0 = step(w, c0);
+          g1 = step(w, c1);
+        }
+        while(g0) g0 = step(w, c0);
+        while(g1) g1 = step(w, c1);
+        close(w, c0);
+        close(w, c1);
+        finish_piece(w, r, ch, 0);
+        more = next_piece(w, r, ch);
+      }
     }
   }
   finish_level_set_contour(s, R, cols, alpha_scale, ws, out);
