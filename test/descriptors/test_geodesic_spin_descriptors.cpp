@@ -243,6 +243,33 @@ TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[
   CHECK_THROWS_AS(shapecorr::contour_l1_distance(rigid, batch[0]), shapecorr::Invalid_input);
 }
 
+TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are unchanged", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  // The construction keeps per-thread vertex records between calls; a ball rejected half-way
+  // (an index out of range after valid ones) must not leave records behind.
+  TestType m;
+  make_strip(m, 40, 10, 4.0, 1.0, 0.5);
+  const shapecorr::Geodesic_spin_descriptors<TestType> g(m, SP::support_fraction(0.3).geodesic_diameter(std::sqrt(17.0)));
+  const std::size_t n = g.number_of_vertices();
+  std::vector<shapecorr::Spin_contour> before;
+  typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball ball;
+  for(std::size_t v : {100u, 200u, 305u}) {
+    g.support_ball(v, ball);
+    before.push_back(g.geodesic_spin_contour(ball));
+  }
+  typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball bad;
+  for(std::size_t v = 0; v < n; ++v) bad.push_back({v, 0.0});
+  bad.push_back({n, 0.0});
+  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_input);
+  std::size_t k = 0;
+  for(std::size_t v : {100u, 200u, 305u}) {
+    g.support_ball(v, ball);
+    const shapecorr::Spin_contour c = g.geodesic_spin_contour(ball);
+    REQUIRE(c.size() == before[k].size());
+    CHECK(shapecorr::contour_l1_distance(c, before[k]) == 0.0);
+    ++k;
+  }
+}
+
 TEST_CASE("geodesic spin descriptors: errors", "[descriptors][gsc]") {
   test::Surface_mesh m;
   shapecorr::make_grid(m, 4, 4);

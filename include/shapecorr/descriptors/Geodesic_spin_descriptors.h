@@ -276,22 +276,23 @@ private:
     const std::size_t R = m_rows;
     const double inv_h = static_cast<double>(R) / m_support;
     const std::size_t n = number_of_vertices();
-    for(const auto& p : ball) {
-      if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
-      const double t = p.second * inv_h - 0.5;
-      st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
-      st.cws.set_rows(p.first, t, R);
-    }
     internal::Geodesic_section sec;
     sec.merge_eps = 1e-12 * m_alpha_scale;
     Spin_contour c(R, m_support, 0.0, 1.0);
-    // Every face an isoline crosses has a corner inside the disc, hence all its corners in the ball
-    // (radius L + the longest edge), its owner among them: the faces owned by the ball's vertices,
-    // each once. Listed without a data-dependent loop per vertex (most own 0 to 4 faces): a fixed
-    // block is copied and the end advances by the count.
+    // The ball's vertex records, and the faces the isolines may cross: every face an isoline
+    // crosses has a corner inside the disc, hence all its corners in the ball (radius L + the
+    // longest edge), its owner among them: the faces owned by the ball's vertices, each once.
+    // Listed without a data-dependent loop per vertex (most own 0 to 4 faces): a fixed block is
+    // copied and the end advances by the count.
+    // (checked first: the records must not be left set by a ball rejected half-way)
+    for(const auto& p : ball)
+      if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
     std::size_t nf = 0;
     std::uint32_t* faces = st.faces.data();
     for(const auto& p : ball) {
+      const double t = p.second * inv_h - 0.5;
+      st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
+      st.cws.set_rows(p.first, t, R);
       const std::uint32_t b = m_owned_begin[p.first], e = m_owned_begin[p.first + 1];
       if(nf + kOwnedCopy + (e - b) > st.faces.size()) { // only when the ball lists a vertex twice
         st.faces.resize(2 * st.faces.size());
