@@ -12,6 +12,10 @@
 #include <shapecorr/descriptors/Spin_contour.h>
 #include <shapecorr/mesh/internal/indexed_mesh.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -305,7 +309,7 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
   //    mispredicted about once per face with long edges).
   std::size_t n_rows = 0;
   const int last_row = static_cast<int>(R) - 1;
-  constexpr int kCandidates = 6;
+  constexpr int kCandidates = 6; // (three pairs of rows below)
   for_each_face([&](std::size_t f) {
     const auto& a0 = ws.rows[static_cast<std::size_t>(F[3 * f])];
     const auto& a1 = ws.rows[static_cast<std::size_t>(F[3 * f + 1])];
@@ -316,7 +320,19 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     const int count = std::max(0, hi - lo + 1);
     if(ws.face_rows.size() < n_rows + static_cast<std::size_t>(count) + kCandidates) ws.face_rows.resize(2 * (n_rows + static_cast<std::size_t>(count)) + 64);
     auto* o = ws.face_rows.data() + n_rows;
+#if defined(__SSE2__)
+    { // the candidates as three 16-byte stores of (row, face) pairs
+      static_assert(sizeof(*o) == 8, "(row, face) pairs of two 32-bit values");
+      const __m128i base = _mm_add_epi32(_mm_setr_epi32(lo, static_cast<int>(f), lo, static_cast<int>(f)), _mm_setr_epi32(0, 0, 1, 0));
+      const __m128i two = _mm_setr_epi32(2, 0, 2, 0);
+      __m128i* q = reinterpret_cast<__m128i*>(o);
+      _mm_storeu_si128(q, base);
+      _mm_storeu_si128(q + 1, _mm_add_epi32(base, two));
+      _mm_storeu_si128(q + 2, _mm_add_epi32(base, _mm_add_epi32(two, two)));
+    }
+#else
     for(int j = 0; j < kCandidates; ++j) o[j] = {static_cast<std::uint32_t>(lo + j), static_cast<std::uint32_t>(f)};
+#endif
     for(int r = lo + kCandidates; r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(f)};
     n_rows += static_cast<std::size_t>(count);
   });
