@@ -502,6 +502,15 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     }
     return false;
   };
+  // The two chains of a piece, one of them stopped or both: the rest one at a time, then the
+  // rest of the piece.
+  auto drain = [&](Row& w, std::uint32_t r, Chain& c0, Chain& c1, bool g0, bool g1, Chain* ch) {
+    while(g0) g0 = step(w, c0);
+    while(g1) g1 = step(w, c1);
+    close(w, c0);
+    close(w, c1);
+    finish_piece(w, r, ch, 0);
+  };
   for(std::size_t r0 = 0; r0 < R; r0 += 2) {
     Row rows[2];
     const std::size_t nr = r0 + 1 < R ? 2 : 1;
@@ -531,32 +540,17 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
         gb1 = step(rows[1], b1);
       }
       if(!ga0 || !ga1) { // piece a is done or nearly: finish it, go on with b
-        while(ga0) ga0 = step(rows[0], a0);
-        while(ga1) ga1 = step(rows[0], a1);
-        close(rows[0], a0);
-        close(rows[0], a1);
-        finish_piece(rows[0], r_0, a, 0);
-        b[0] = b0;
-        b[1] = b1;
+        drain(rows[0], r_0, a0, a1, ga0, ga1, a);
         if(!gb0 || !gb1) { // b as well
-          while(gb0) gb0 = step(rows[1], b0);
-          while(gb1) gb1 = step(rows[1], b1);
-          close(rows[1], b0);
-          close(rows[1], b1);
-          finish_piece(rows[1], r_1, b, 0);
+          drain(rows[1], r_1, b0, b1, gb0, gb1, b);
           more_b = next_piece(rows[1], r_1, b);
-        } else {
-          // b continues: its chains are resumed with the next piece of a
+        } else { // b continues: its chains resume with the next piece of a
           b[0] = b0;
           b[1] = b1;
         }
         more_a = next_piece(rows[0], r_0, a);
       } else { // piece b is done or nearly
-        while(gb0) gb0 = step(rows[1], b0);
-        while(gb1) gb1 = step(rows[1], b1);
-        close(rows[1], b0);
-        close(rows[1], b1);
-        finish_piece(rows[1], r_1, b, 0);
+        drain(rows[1], r_1, b0, b1, gb0, gb1, b);
         a[0] = a0;
         a[1] = a1;
         more_b = next_piece(rows[1], r_1, b);
@@ -567,20 +561,14 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
       Row& w = rows[j];
       Chain* ch = j == 0 ? a : b;
       const std::uint32_t r = j == 0 ? r_0 : r_1;
-      bool more = j == 0 ? more_a : more_b;
-      while(more) {
+      for(bool more = j == 0 ? more_a : more_b; more; more = next_piece(w, r, ch)) {
         Chain c0 = ch[0], c1 = ch[1];
         bool g0 = true, g1 = true;
         while(g0 && g1) {
           g0 = step(w, c0);
           g1 = step(w, c1);
         }
-        while(g0) g0 = step(w, c0);
-        while(g1) g1 = step(w, c1);
-        close(w, c0);
-        close(w, c1);
-        finish_piece(w, r, ch, 0);
-        more = next_piece(w, r, ch);
+        drain(w, r, c0, c1, g0, g1, ch);
       }
     }
   }
