@@ -1,17 +1,20 @@
 // Geodesic Spin Contour (thesis chapter 4): invariance under an exact isometry (a bent strip), under
 // vertex renumbering, locality (deleting far parts changes nothing), agreement of the fast
-// construction with the image-then-contour definition, the geodesic spin image, errors; over
-// Surface_mesh and Polyhedron_3.
+// construction with the image-then-contour definition, walks seeded by descent on spheres
+// against walks seeded from every face, the geodesic spin image, errors; over Surface_mesh and
+// Polyhedron_3.
 #include "spectral/spectral_test_helpers.h"
 #include "test_meshes.h"
 
 #include <shapecorr/descriptors.h>
+#include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numeric>
 #include <random>
 
@@ -53,6 +56,49 @@ void bumpy_torus_soup(std::vector<std::array<double, 3>>& P, std::vector<std::ar
 template <typename Mesh>
 std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list(const Mesh& m) {
   return test::vertices_in_index_order(m);
+}
+
+// A sphere with four long "legs" around its equator and a bump on top, as a soup: seen from
+// the top, the isolines split into several pieces (one per leg) at larger distances.
+void legged_sphere_soup(std::vector<std::array<double, 3>>& P, std::vector<std::array<std::size_t, 3>>& T) {
+  test::Surface_mesh s;
+  shapecorr::make_icosphere(s, 4);
+  P.clear();
+  T.clear();
+  const std::array<Eigen::Vector3d, 5> legs = {Eigen::Vector3d(1, 0, -0.3).normalized(), Eigen::Vector3d(0, 1, -0.35).normalized(),
+                                               Eigen::Vector3d(-1, 0.1, -0.3).normalized(), Eigen::Vector3d(0.1, -1, -0.4).normalized(),
+                                               Eigen::Vector3d(0.2, 0.1, 1).normalized()};
+  for(auto v : s.vertices()) {
+    const Eigen::Vector3d p(s.point(v).x(), s.point(v).y(), s.point(v).z());
+    double r = 1.0;
+    for(std::size_t i = 0; i < legs.size(); ++i) r += (i < 4 ? 1.6 : 0.3) * std::exp(-(p - legs[i]).squaredNorm() / 0.05);
+    P.push_back({r * p.x(), r * p.y(), r * p.z()});
+  }
+  for(auto f : s.faces()) {
+    std::array<std::size_t, 3> tri;
+    int k = 0;
+    for(auto v : vertices_around_face(s.halfedge(f), s)) tri[static_cast<std::size_t>(k++)] = v.idx();
+    T.push_back(tri);
+  }
+}
+
+bool same_bits(const shapecorr::Spin_contour& a, const shapecorr::Spin_contour& b) {
+  if(a.rows() != b.rows() || a.alphas() != b.alphas()) return false;
+  for(std::size_t r = 0; r < a.rows(); ++r)
+    if(a.row_begin(r) != b.row_begin(r)) return false;
+  return true;
+}
+
+// The number of rows of c whose points form more than one interval (a gap wider than a column).
+std::size_t rows_with_gaps(const shapecorr::Spin_contour& c, double column) {
+  std::size_t n = 0;
+  for(std::size_t r = 0; r < c.rows(); ++r)
+    for(std::size_t i = c.row_begin(r); i + 1 < c.row_end(r); ++i)
+      if(c.alphas()[i + 1] - c.alphas()[i] > 1.5 * column) {
+        ++n;
+        break;
+      }
+  return n;
 }
 
 } // namespace
@@ -268,6 +314,131 @@ TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are uncha
     CHECK(shapecorr::contour_l1_distance(c, before[k]) == 0.0);
     ++k;
   }
+}
+
+TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of walks seeded from every face", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  legged_sphere_soup(P, T);
+  TestType m;
+  shapecorr::internal::soup_to_mesh(P, T, m);
+  for(double L : {0.25, 0.5, 0.8}) {
+    shapecorr::Geodesic_spin_descriptors<TestType> g(m, SP::support_fraction(L).agd_radius_fraction(0.1));
+    REQUIRE(g.is_topological_sphere());
+    const double column = 1.0 / static_cast<double>(g.columns());
+    std::size_t gaps = 0;
+    typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball ball;
+    for(std::size_t i = 0; i < g.number_of_vertices(); i += 7) {
+      g.support_ball(i, ball);
+      g.use_descent_seeds(true);
+      const shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
+      g.use_descent_seeds(false);
+      const shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
+      REQUIRE(!b.empty());
+      CHECK(same_bits(a, b));
+      gaps += rows_with_gaps(b, column);
+    }
+    if(L >= 0.5) CHECK(gaps > 20); // the isolines do come in several pieces (the case descent seeds must not miss)
+  }
+}
+
+TEMPLATE_TEST_CASE("GSC on a sphere: balls that rule out descent seeds give the same contours", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+  // Balls the caller made: two minima (distances to the nearer of two points), a vertex exactly
+  // on a row line, a ball missing the neighbours of disc vertices, a ball listing a vertex twice.
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  legged_sphere_soup(P, T);
+  TestType m;
+  shapecorr::internal::soup_to_mesh(P, T, m);
+  shapecorr::Geodesic_spin_descriptors<TestType> g(m, SP::support_fraction(0.5));
+  REQUIRE(g.is_topological_sphere());
+  typedef typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball Ball;
+  const double h = g.support_length() / static_cast<double>(g.rows());
+  auto both_ways = [&](const Ball& ball) {
+    g.use_descent_seeds(true);
+    const shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
+    g.use_descent_seeds(false);
+    const shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
+    CHECK(!b.empty());
+    CHECK(same_bits(a, b));
+  };
+  Ball a, b;
+  for(std::size_t i : {5u, 400u, 1500u}) {
+    g.support_ball(i, a);
+    g.support_ball((i + 900) % g.number_of_vertices(), b);
+    Ball two = a; // the nearer of the two sources, over the union of both balls
+    for(const auto& p : b) {
+      auto it = std::find_if(two.begin(), two.end(), [&](const std::pair<std::size_t, double>& q) { return q.first == p.first; });
+      if(it == two.end()) two.push_back(p);
+      else it->second = std::min(it->second, p.second);
+    }
+    both_ways(two);
+    Ball on_row = a; // a vertex exactly on row 10 (t = d / h - 1/2 = 10)
+    on_row[on_row.size() / 3].second = 10.5 * h;
+    both_ways(on_row);
+    Ball partial = a; // the farther half dropped
+    partial.resize(partial.size() / 2);
+    both_ways(partial);
+    Ball twice = a;
+    twice.push_back(a[a.size() / 2]);
+    both_ways(twice);
+  }
+}
+
+TEST_CASE("topological spheres are recognised", "[descriptors][gsc]") {
+  using shapecorr::internal::build_face_links;
+  using shapecorr::internal::is_topological_sphere;
+  auto arrays = [](std::size_t n, const std::vector<std::array<int, 3>>& faces) {
+    shapecorr::internal::Triangle_arrays a;
+    a.V = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>::Random(static_cast<Eigen::Index>(n), 3);
+    a.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int k = 0; k < 3; ++k) a.F(static_cast<Eigen::Index>(f), k) = faces[f][static_cast<std::size_t>(k)];
+    return a;
+  };
+  const std::vector<std::array<int, 3>> tet = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  CHECK(is_topological_sphere(build_face_links(arrays(4, tet)), 4));
+  auto flipped = tet; // orientation does not matter
+  std::swap(flipped[2][0], flipped[2][1]);
+  CHECK(is_topological_sphere(build_face_links(arrays(4, flipped)), 4));
+  CHECK_FALSE(is_topological_sphere(build_face_links(arrays(4, {tet[0], tet[1], tet[2]})), 4)); // a boundary
+  CHECK_FALSE(is_topological_sphere(build_face_links(arrays(5, tet)), 5));                      // an isolated vertex
+  auto two = tet; // two tetrahedra: apart, or sharing vertex 0 (a non-manifold vertex)
+  for(const auto& f : tet) two.push_back({f[0] + 4, f[1] + 4, f[2] + 4});
+  CHECK_FALSE(is_topological_sphere(build_face_links(arrays(8, two)), 8));
+  auto bowtie = tet;
+  for(const auto& f : tet) bowtie.push_back({f[0] == 0 ? 0 : f[0] + 3, f[1] == 0 ? 0 : f[1] + 3, f[2] == 0 ? 0 : f[2] + 3});
+  CHECK_FALSE(is_topological_sphere(build_face_links(arrays(7, bowtie)), 7));
+  test::Surface_mesh torus, sphere;
+  shapecorr::make_torus(torus, 1.0, 0.3, 12, 8);
+  shapecorr::make_icosphere(sphere, 2);
+  CHECK_FALSE(shapecorr::Geodesic_spin_descriptors<test::Surface_mesh>(torus).is_topological_sphere());
+  CHECK(shapecorr::Geodesic_spin_descriptors<test::Surface_mesh>(sphere).is_topological_sphere());
+}
+
+TEST_CASE("GSC on the TOSCA wolf: walks seeded by descent give the bits of walks seeded from every face", "[descriptors][gsc][data]") {
+  const std::string file = test::data_dir().empty() ? std::string() : test::data_dir() + "/tosca5k/meshes/wolf0.off";
+  std::ifstream probe(file);
+  if(file.empty() || !probe) {
+    WARN("../shared/data absent: skipped");
+    return;
+  }
+  test::Surface_mesh m;
+  shapecorr::read_triangle_mesh(file, m);
+  shapecorr::Geodesic_spin_descriptors<test::Surface_mesh> g(m, SP::support_fraction(0.4).agd_radius_fraction(0.15));
+  REQUIRE(g.is_topological_sphere());
+  std::vector<std::size_t> ids;
+  for(std::size_t i = 0; i < g.number_of_vertices(); i += 11) ids.push_back(i);
+  const auto a = g.geodesic_spin_contours(ids);
+  g.use_descent_seeds(false);
+  const auto b = g.geodesic_spin_contours(ids);
+  std::size_t same = 0, gaps = 0;
+  for(std::size_t k = 0; k < ids.size(); ++k) {
+    same += same_bits(a[k], b[k]) ? 1 : 0;
+    gaps += rows_with_gaps(b[k], 1.0 / static_cast<double>(g.columns()));
+  }
+  CHECK(same == ids.size());
+  CHECK(gaps > ids.size()); // rows in several pieces are common
 }
 
 TEST_CASE("geodesic spin descriptors: errors", "[descriptors][gsc]") {

@@ -41,7 +41,11 @@ struct Geodesic_section {
   };
   typedef double Point;
   static constexpr bool linear = true; // alpha is linear along a segment: its range is that of its end points
-  static Point at(const Vertex& a, const Vertex& b, double c) { return a.a + c * (b.a - a.a); }
+  // The agd where gd crosses the level on the edge a b (offsets sa, sb of opposite signs), by a
+  // formula symmetric in the two ends: the same bits from either face of the edge and either
+  // walking direction, so that a piece's range does not depend on where its walk started. (Its
+  // products have opposite signs and the denominator's terms too: no cancellation.)
+  static Point cross(const Vertex& a, const Vertex& b, double sa, double sb) { return (a.a * sb - b.a * sa) / (sb - sa); }
   static Point at(const Vertex& a) { return a.a; }
   double merge_eps = 0;
   void segment(Point p, Point q, double& l, double& u) const {
@@ -168,6 +172,10 @@ public:
         longest = std::max(longest, (a.point(static_cast<std::size_t>(m_links[f].v[k])) - a.point(static_cast<std::size_t>(m_links[f].v[(k + 1) % 3]))).norm());
     }
     m_ball_radius = m_support + 1.01 * longest;
+    // the row coordinate of the vertices outside a ball: above every row and every vertex of the ball
+    m_outside_t = static_cast<double>(m_rows) * (m_ball_radius / m_support) + 2.0;
+    m_sphere = internal::is_topological_sphere(m_links, n);
+    if(m_sphere) m_stars = internal::build_vertex_stars(m_links, n);
     // A(Q)/3: the share of a vertex in the area (the geodesic spin image's weights)
     const Eigen::VectorXd A = internal::incident_triangle_areas(a);
     m_vertex_area.resize(n);
@@ -193,6 +201,15 @@ public:
   const std::vector<double>& average_geodesic_distances() const { return m_agd; }
   /// The fast-marching engine (also usable for other distance queries).
   const Fast_marching_geodesics<TriangleMesh>& geodesic_engine() const { return m_engine; }
+  /// Whether the mesh is a topological sphere (closed, connected, manifold, genus 0). On one, a
+  /// contour's walk along the isolines starts from a few seeds per row found by steepest descent
+  /// (see doc/geodesic_spin_contour.md) instead of every face an isoline crosses, when the ball
+  /// allows it (one minimum, no vertex exactly on a row, complete); the contours are the same.
+  bool is_topological_sphere() const { return m_sphere; }
+  /// With `false`, every contour seeds its walk from every face an isoline crosses, also on a
+  /// sphere (for comparisons and tests; the output is the same bits). Not to be called while
+  /// other threads use the object.
+  void use_descent_seeds(bool on) { m_descent_seeds = on; }
 
   /// The geodesic ball of vertex i that the descriptors need (radius L plus the longest edge).
   void support_ball(std::size_t i, Ball& ball) const { m_engine.distances_within(i, m_ball_radius, ball, state().fmm); }
@@ -242,6 +259,7 @@ private:
     Ball ball;
     internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
     std::vector<std::uint32_t> faces; // the disc's faces
+    std::vector<float> tf;            // per vertex: the row coordinate t in float (the descent seeds read it)
   };
   static constexpr std::size_t kOwnedCopy = 8;
   static std::uint64_t next_id() {
@@ -259,13 +277,15 @@ private:
     st.owner = m_id;
     const std::size_t n = number_of_vertices();
     st.cws.resize(n);
+    st.tf.resize(n);
     st.faces.assign(m_links.size() + kOwnedCopy, 0u);
     for(std::size_t v = 0; v < n; ++v) unset(st, v);
   }
   void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
-  // A vertex outside the ball: beyond the last row.
+  // A vertex outside the ball: beyond the last row and every vertex of a ball.
   void unset(Thread_state& st, std::size_t v) const {
-    st.cws.vx[v] = {0.0, static_cast<double>(m_rows) + 2.0};
+    st.cws.vx[v] = {0.0, m_outside_t};
+    st.tf[v] = static_cast<float>(m_outside_t);
     st.cws.rows[v] = {{static_cast<int>(m_rows), static_cast<int>(m_rows)}}; // set_rows of that t
   }
   Spin_contour contour_of(std::size_t i, Thread_state& st) const {
@@ -279,32 +299,40 @@ private:
     internal::Geodesic_section sec;
     sec.merge_eps = 1e-12 * m_alpha_scale;
     Spin_contour c(R, m_support, 0.0, 1.0);
-    // The ball's vertex records, and the faces the isolines may cross: every face an isoline
-    // crosses has a corner inside the disc, hence all its corners in the ball (radius L + the
-    // longest edge), its owner among them: the faces owned by the ball's vertices, each once.
-    // Listed without a data-dependent loop per vertex (most own 0 to 4 faces): a fixed block is
-    // copied and the end advances by the count.
     // (checked first: the records must not be left set by a ball rejected half-way)
     for(const auto& p : ball)
       if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
-    std::size_t nf = 0;
-    std::uint32_t* faces = st.faces.data();
     for(const auto& p : ball) {
       const double t = p.second * inv_h - 0.5;
       st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
-      st.cws.set_rows(p.first, t, R);
-      const std::uint32_t b = m_owned_begin[p.first], e = m_owned_begin[p.first + 1];
-      if(nf + kOwnedCopy + (e - b) > st.faces.size()) { // only when the ball lists a vertex twice
-        st.faces.resize(2 * st.faces.size());
-        faces = st.faces.data();
-      }
-      std::copy(m_owned.data() + b, m_owned.data() + b + kOwnedCopy, faces + nf);
-      if(e - b > kOwnedCopy) std::copy(m_owned.data() + b + kOwnedCopy, m_owned.data() + e, faces + nf + kOwnedCopy);
-      nf += e - b;
+      st.tf[p.first] = static_cast<float>(t);
     }
-    internal::build_level_set_contour(m_links, m_half_edges, m_engine.arrays().F.data(), sec, R, m_cols, m_alpha_scale, [&](auto&& visit) {
-      for(std::size_t k = 0; k < nf; ++k) visit(faces[k]);
-    }, st.cws, c);
+    // The walk's seeds: by descent on a topological sphere (a few per row), else every face an
+    // isoline crosses.
+    if(!(m_sphere && m_descent_seeds &&
+         internal::seed_rows_by_descent(m_stars, st.tf.data(), ball, [](const std::pair<std::size_t, double>& p) { return p.first; }, R, m_outside_t, st.cws))) {
+      // Every face an isoline crosses has a corner inside the disc, hence all its corners in the
+      // ball (radius L + the longest edge), its owner among them: the faces owned by the ball's
+      // vertices, each once. Listed without a data-dependent loop per vertex (most own 0 to 4
+      // faces): a fixed block is copied and the end advances by the count.
+      std::size_t nf = 0;
+      std::uint32_t* faces = st.faces.data();
+      for(const auto& p : ball) {
+        st.cws.set_rows(p.first, st.cws.vx[p.first].t, R);
+        const std::uint32_t b = m_owned_begin[p.first], e = m_owned_begin[p.first + 1];
+        if(nf + kOwnedCopy + (e - b) > st.faces.size()) { // only when the ball lists a vertex twice
+          st.faces.resize(2 * st.faces.size());
+          faces = st.faces.data();
+        }
+        std::copy(m_owned.data() + b, m_owned.data() + b + kOwnedCopy, faces + nf);
+        if(e - b > kOwnedCopy) std::copy(m_owned.data() + b + kOwnedCopy, m_owned.data() + e, faces + nf + kOwnedCopy);
+        nf += e - b;
+      }
+      internal::seed_rows_by_faces(m_engine.arrays().F.data(), R, [&](auto&& visit) {
+        for(std::size_t k = 0; k < nf; ++k) visit(faces[k]);
+      }, st.cws);
+    }
+    internal::walk_level_sets(m_links, m_half_edges, sec, R, m_cols, m_alpha_scale, st.cws, c);
     for(const auto& p : ball) unset(st, p.first);
     return c;
   }
@@ -342,11 +370,14 @@ private:
   Fast_marching_geodesics<TriangleMesh> m_engine;
   std::uint64_t m_id;
   std::size_t m_rows = 64, m_cols = 64;
-  double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0;
+  double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0, m_outside_t = 0;
   std::vector<double> m_agd, m_vertex_area;
   std::vector<internal::Face_link> m_links;
   std::vector<internal::Half_edge_link> m_half_edges;
   std::vector<std::uint32_t> m_owned_begin, m_owned; // faces by their corner of smallest index
+  bool m_sphere = false;       // a topological sphere: the walk can be seeded by descent
+  bool m_descent_seeds = true; // (see use_descent_seeds)
+  internal::Vertex_stars m_stars; // on a sphere
   unsigned m_threads = 1;
 };
 

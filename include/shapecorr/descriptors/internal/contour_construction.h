@@ -123,6 +123,105 @@ inline std::vector<Half_edge_link> build_half_edge_links(const std::vector<Face_
   return he;
 }
 
+/// Whether the faces make a closed connected 2-manifold of genus 0 (a topological sphere): every
+/// edge in exactly two faces, every vertex in at least one face and its faces one fan around it,
+/// one component, V - E + F = 2.
+inline bool is_topological_sphere(const std::vector<Face_link>& links, std::size_t vertices) {
+  const std::size_t m = links.size();
+  if(m == 0) return false;
+  std::vector<std::uint32_t> incident(vertices, 0u);
+  for(const Face_link& f : links)
+    for(int k = 0; k < 3; ++k) {
+      if(f.nb[k] < 0 || f.edge[k] < 0 || f.v[k] < 0 || static_cast<std::size_t>(f.v[k]) >= vertices) return false;
+      ++incident[static_cast<std::size_t>(f.v[k])];
+    }
+  for(std::uint32_t c : incident)
+    if(c == 0) return false;
+  // the faces around each vertex, walked from one of them across its edges at the vertex: one
+  // cycle through all of them
+  std::vector<char> fan_done(vertices, 0);
+  for(std::size_t f0 = 0; f0 < m; ++f0)
+    for(int k0 = 0; k0 < 3; ++k0) {
+      const int v = links[f0].v[k0];
+      if(fan_done[static_cast<std::size_t>(v)]) continue;
+      fan_done[static_cast<std::size_t>(v)] = 1;
+      std::size_t f = f0, count = 0;
+      int e = (k0 + 2) % 3; // leave through the edge from corner k0 + 2 to corner k0
+      do {
+        const int in = links[f].edge[e];
+        const std::size_t g = static_cast<std::size_t>(links[f].nb[e]);
+        int kg = -1;
+        for(int j = 0; j < 3; ++j)
+          if(links[g].v[j] == v) kg = j;
+        if(kg < 0) return false;
+        const int a = (kg + 2) % 3, b = kg; // g's two edges at v: leave through the other one
+        e = in == a ? b : (in == b ? a : -1);
+        if(e < 0 || ++count > incident[static_cast<std::size_t>(v)]) return false;
+        f = g;
+      } while(f != f0);
+      if(count != incident[static_cast<std::size_t>(v)]) return false;
+    }
+  // one component (faces joined across edges)
+  std::vector<char> seen(m, 0);
+  std::vector<std::size_t> stack{0};
+  seen[0] = 1;
+  std::size_t reached = 1;
+  while(!stack.empty()) {
+    const std::size_t f = stack.back();
+    stack.pop_back();
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t g = static_cast<std::size_t>(links[f].nb[k]);
+      if(!seen[g]) {
+        seen[g] = 1;
+        ++reached;
+        stack.push_back(g);
+      }
+    }
+  }
+  if(reached != m || m % 2 != 0) return false;
+  const long chi = static_cast<long>(vertices) - static_cast<long>(3 * m / 2) + static_cast<long>(m);
+  return chi == 2;
+}
+
+/// Every vertex's neighbours with a face on the edge to each: kWidth slots per vertex (padded with
+/// the vertex itself), the rest of a larger star in an overflow list.
+struct Vertex_stars {
+  static constexpr int kWidth = 8;
+  std::vector<std::int32_t> nb, face;     // kWidth per vertex
+  std::vector<std::uint32_t> more_begin;  // per vertex (and one past): its neighbours beyond kWidth
+  std::vector<std::int32_t> more_nb, more_face;
+};
+
+inline Vertex_stars build_vertex_stars(const std::vector<Face_link>& links, std::size_t vertices) {
+  std::vector<std::vector<std::pair<std::int32_t, std::int32_t>>> star(vertices);
+  for(std::size_t f = 0; f < links.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const int u = links[f].v[k], v = links[f].v[(k + 1) % 3];
+      for(const auto& e : {std::make_pair(u, v), std::make_pair(v, u)}) {
+        auto& s = star[static_cast<std::size_t>(e.first)];
+        if(std::find_if(s.begin(), s.end(), [&](const std::pair<std::int32_t, std::int32_t>& x) { return x.first == e.second; }) == s.end())
+          s.emplace_back(e.second, static_cast<std::int32_t>(f));
+      }
+    }
+  Vertex_stars st;
+  const std::size_t W = Vertex_stars::kWidth;
+  st.nb.resize(W * vertices);
+  st.face.assign(W * vertices, 0);
+  st.more_begin.assign(vertices + 1, 0u);
+  for(std::size_t v = 0; v < vertices; ++v) {
+    for(std::size_t k = 0; k < W; ++k) {
+      st.nb[W * v + k] = k < star[v].size() ? star[v][k].first : static_cast<std::int32_t>(v);
+      if(k < star[v].size()) st.face[W * v + k] = star[v][k].second;
+    }
+    for(std::size_t k = W; k < star[v].size(); ++k) {
+      st.more_nb.push_back(star[v][k].first);
+      st.more_face.push_back(star[v][k].second);
+    }
+    st.more_begin[v + 1] = static_cast<std::uint32_t>(st.more_nb.size());
+  }
+  return st;
+}
+
 // Counting sort of (row, value) pairs by row: out holds the values grouped by row, row r in
 // [count[r], count[r + 1]).
 template <typename Value>
@@ -193,6 +292,114 @@ struct Contour_workspace {
   }
 };
 
+/// The walk's seeds by descent, for a row coordinate t given at the vertices of `ball` (records
+/// in `ws.vx`, and rounded to float in `tf`; every other vertex at t = `outside`, above every
+/// row) on a topological sphere: a seed (r, f) for every vertex x and row r strictly between t at
+/// a strictly lower neighbour p of x (the highest, in float, to have few seeds) and t at x, f a
+/// face on the edge x p; grouped by row into `ws.bucket` / `ws.count` as by seed_rows_by_faces.
+/// They meet every piece of every row's level set when
+///  (a) exactly one ball vertex has no strictly lower neighbour,
+///  (b) no vertex lies on a row line and every ball vertex has t < outside,
+///  (c) every vertex with t <= R - 1 has all its neighbours in the ball.
+/// Proof: the set A_r where t <= r is connected by (a) (from any point of it, down inside its
+/// face to a corner, then along the strictly descending edges to the one minimum). On a sphere
+/// each component U of the complement of a connected A_r has a connected boundary
+/// (unicoherence), so by (b) a single piece C of the level set. An edge crossing C has its upper
+/// end u in the ball by (c); the descending path from u stays in the ball and ends at the
+/// minimum below r, so it leaves U, through C, by an edge x p with t(p) < r < t(x): a seed of C.
+/// (A neighbour lower in float is lower in double; rows come from the doubles.)
+/// Returns false, and seeds nothing, when a condition fails: the caller uses seed_rows_by_faces.
+template <typename V, typename Ball, typename IndexOf>
+bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball& ball, IndexOf&& index_of, std::size_t R, double outside, Contour_workspace<V>& ws) {
+  constexpr std::size_t W = Vertex_stars::kWidth;
+  const V* vx = ws.vx.data();
+  const double top = outside, last = static_cast<double>(R) - 1.0;
+  const float top_f = static_cast<float>(outside), none = -std::numeric_limits<float>::infinity();
+  const int last_row = static_cast<int>(R) - 1;
+  std::size_t n_seeds = 0, minima = 0;
+  unsigned fail = 0;
+  constexpr std::size_t kCandidates = 2;
+  if(ws.face_rows.size() < kCandidates * ball.size() + kCandidates) ws.face_rows.resize(kCandidates * ball.size() + 64);
+  // floor of x in [-1, outside] by integer conversion (std::floor is a library call without SSE4.1)
+  auto floor_of = [](double x) {
+    const int i = static_cast<int>(x);
+    return i - (static_cast<double>(i) > x ? 1 : 0);
+  };
+  for(const auto& b : ball) {
+    const std::size_t v = index_of(b);
+    const std::int32_t* nb = stars.nb.data() + W * v;
+    float best, highest;
+    int k_best;
+#if defined(__SSE2__)
+    { // four neighbours per register, without branches (their outcomes are random)
+      static_assert(W == 8, "two quadruples of neighbours");
+      const __m128 t = _mm_set1_ps(tf[v]), lowest = _mm_set1_ps(none);
+      const __m128 n0 = _mm_setr_ps(tf[nb[0]], tf[nb[1]], tf[nb[2]], tf[nb[3]]);
+      const __m128 n1 = _mm_setr_ps(tf[nb[4]], tf[nb[5]], tf[nb[6]], tf[nb[7]]);
+      const __m128 below0 = _mm_cmplt_ps(n0, t), below1 = _mm_cmplt_ps(n1, t);
+      const __m128 c0 = _mm_or_ps(_mm_and_ps(below0, n0), _mm_andnot_ps(below0, lowest));
+      const __m128 c1 = _mm_or_ps(_mm_and_ps(below1, n1), _mm_andnot_ps(below1, lowest));
+      __m128 m = _mm_max_ps(c0, c1), h = _mm_max_ps(n0, n1);
+      m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
+      m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2))); // every lane: the largest
+      h = _mm_max_ps(h, _mm_movehl_ps(h, h));
+      h = _mm_max_ss(h, _mm_shuffle_ps(h, h, _MM_SHUFFLE(1, 1, 1, 1)));
+      best = _mm_cvtss_f32(m);
+      highest = _mm_cvtss_f32(h);
+      const int hit = _mm_movemask_ps(_mm_cmpeq_ps(c0, m)) | (_mm_movemask_ps(_mm_cmpeq_ps(c1, m)) << 4);
+      k_best = __builtin_ctz(static_cast<unsigned>(hit) | 0x100u) & 7;
+    }
+#else
+    best = none;
+    highest = none;
+    k_best = 0;
+    for(std::size_t k = 0; k < W; ++k) {
+      const float tn = tf[nb[k]];
+      highest = std::max(highest, tn);
+      const float c = tn < tf[v] ? tn : none;
+      k_best = c > best ? static_cast<int>(k) : k_best;
+      best = std::max(best, c);
+    }
+#endif
+    std::int32_t face = stars.face[W * v + static_cast<std::size_t>(k_best)], p = nb[k_best];
+    if(stars.more_begin[v + 1] != stars.more_begin[v]) // rare: more than W neighbours
+      for(std::uint32_t j = stars.more_begin[v]; j < stars.more_begin[v + 1]; ++j) {
+        const float tn = tf[stars.more_nb[j]];
+        highest = std::max(highest, tn);
+        if(tn < tf[v] && tn > best) {
+          best = tn;
+          face = stars.more_face[j];
+          p = stars.more_nb[j];
+        }
+      }
+    const double tv = vx[v].t, tp = vx[static_cast<std::size_t>(p)].t;
+    const unsigned has_lower = best > none ? 1u : 0u;
+    const int fl = floor_of(std::max(-1.0, std::min(tv, top)));
+    minima += 1u - has_lower;
+    // (b), (c), without branches
+    fail |= static_cast<unsigned>(!(tv < top)) | (static_cast<unsigned>(static_cast<double>(fl) == tv) & static_cast<unsigned>(tv >= 0) & static_cast<unsigned>(tv <= last)) |
+            (static_cast<unsigned>(tv <= last) & static_cast<unsigned>(highest >= top_f));
+    // rows r with t(p) < r < t(x): from floor(t(p)) + 1 to floor(t(x)) (neither is a row: (b))
+    const int lo = std::max(0, floor_of(std::max(-1.0, std::min(tp, top))) + 1);
+    const int hi = std::min(last_row, fl);
+    const int count = has_lower ? std::max(0, hi - lo + 1) : 0;
+    auto* o = ws.face_rows.data() + n_seeds;
+    o[0] = {static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(face)};
+    o[1] = {static_cast<std::uint32_t>(lo + 1), static_cast<std::uint32_t>(face)};
+    if(count > static_cast<int>(kCandidates)) { // an edge across more than two rows
+      if(ws.face_rows.size() < n_seeds + static_cast<std::size_t>(count) + (ball.size() + 1) * kCandidates) {
+        ws.face_rows.resize(2 * (n_seeds + static_cast<std::size_t>(count) + (ball.size() + 1) * kCandidates));
+        o = ws.face_rows.data() + n_seeds;
+      }
+      for(int r = lo + static_cast<int>(kCandidates); r <= hi; ++r) o[r - lo] = {static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(face)};
+    }
+    n_seeds += static_cast<std::size_t>(count);
+  }
+  if(fail || minima != 1) return false;
+  group_by_row(ws.face_rows.data(), n_seeds, R, ws.count, ws.next, ws.bucket);
+  return true;
+}
+
 // The section of a face (corner records w) with the line t as an alpha range [l, u]; 0 when
 // empty, else the bit mask of the edges (corner k to k+1) through which the section leaves the face.
 template <typename S>
@@ -205,7 +412,7 @@ int level_line_section(const S& s, const typename S::Vertex* const* w, double t,
     if(p0 == p1 && p1 == p2) return 0;
     const int k = (p0 == p1) ? 2 : (p0 == p2 ? 1 : 0);
     const int a = (k + 1) % 3, b = (k + 2) % 3;
-    s.segment(S::at(*w[k], *w[a], d[k] / (d[k] - d[a])), S::at(*w[k], *w[b], d[k] / (d[k] - d[b])), l, u);
+    s.segment(S::cross(*w[k], *w[a], d[k], d[a]), S::cross(*w[k], *w[b], d[k], d[b]), l, u);
     return (1 << k) | (1 << b); // edges (k, k+1) and (k+2, k)
   }
   P pts[6];
@@ -213,7 +420,7 @@ int level_line_section(const S& s, const typename S::Vertex* const* w, double t,
   for(int k = 0; k < 3; ++k) {
     const int k2 = (k + 1) % 3;
     if(d[k] == 0) pts[np++] = S::at(*w[k]);
-    if((d[k] < 0 && d[k2] > 0) || (d[k] > 0 && d[k2] < 0)) pts[np++] = S::at(*w[k], *w[k2], d[k] / (d[k] - d[k2]));
+    if((d[k] < 0 && d[k2] > 0) || (d[k] > 0 && d[k2] < 0)) pts[np++] = S::cross(*w[k], *w[k2], d[k], d[k2]);
   }
   if(np == 0) return 0;
   s.polygon(pts, np, np == 3 && d[0] == 0 && d[1] == 0 && d[2] == 0, l, u);
@@ -223,11 +430,13 @@ int level_line_section(const S& s, const typename S::Vertex* const* w, double t,
   return edges;
 }
 
-// The point of the line t on the edge from corner record i to j.
+// The point of the line t on the edge from corner record i to j (i when both lie on it).
 template <typename S>
 typename S::Point level_line_point(const typename S::Vertex& i, const typename S::Vertex& j, double t) {
   const double si = i.t - t, sj = j.t - t;
-  return S::at(i, j, si == sj ? 0.0 : si / (si - sj));
+  if(si == 0) return S::at(i);
+  if(sj == 0) return S::at(j);
+  return S::cross(i, j, si, sj);
 }
 
 // The contour from the pieces' intervals in `ws.entries` (rows 0..R-1): the union per row, the
@@ -285,27 +494,15 @@ void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, doubl
   for(std::size_t r = 0; r < R; ++r) out.append_row(r, ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end[r]), ws.row.begin() + static_cast<std::ptrdiff_t>(ws.row_end[r + 1]));
 }
 
-/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`, rows set with `ws.set_rows`) over the
-/// faces `for_each_face(fn)` visits; `F` holds the faces' corners (3 per face, as in `links`: the
-/// classification pass reads this compact copy). The section policy `S` gives the per-vertex record `S::Vertex`,
-/// the point type on a level line `S::Point`, `S::at(a, b, c)` (the point at a + c (b - a)),
-/// `S::at(a)`, `s.segment(p, q, l, u)` (the alpha range, possibly in squared units, of a segment of a
-/// level line), `s.polygon(points, n, in_plane, l, u)` (the same for a face with corners on the
-/// line: n points, or the whole triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range;
-/// false drops it), `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`.
-/// Alpha is sampled on `cols` columns over [0, alpha_scale] for the closing samples and stored
-/// divided by `alpha_scale`; `out` must have R rows.
-template <typename S, typename FaceVisitor>
-void build_level_set_contour(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const int* F, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
-                             FaceVisitor&& for_each_face, Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
-  typedef typename S::Vertex V;
-  typedef typename S::Point P;
-  const std::size_t m = links.size();
-  ws.entries.clear();
-  // 1. The faces each row line crosses (most faces cross none to three), grouped by row;
-  //    branch-free unless a face spans more than kCandidates rows: that many candidate entries are
-  //    written and the end advances by the count (a loop over the rows, whose trip count varies,
-  //    mispredicted about once per face with long edges).
+// The walk's seeds from the faces (the general way): every face a row line crosses, under that
+// row (most faces cross none to three); `ws.bucket` gets them grouped by row, row r in
+// [ws.count[r], ws.count[r + 1]). Rows per vertex from `ws.set_rows`; `F` holds the faces'
+// corners, 3 per face (this pass reads the compact copy). Branch-free unless a face spans more
+// than kCandidates rows: that many candidate entries are written and the end advances by the
+// count (a loop over the rows, whose trip count varies, mispredicted about once per face with
+// long edges).
+template <typename V, typename FaceVisitor>
+void seed_rows_by_faces(const int* F, std::size_t R, FaceVisitor&& for_each_face, Contour_workspace<V>& ws) {
   std::size_t n_rows = 0;
   const int last_row = static_cast<int>(R) - 1;
   constexpr int kCandidates = 6; // (three pairs of rows below)
@@ -336,6 +533,27 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     n_rows += static_cast<std::size_t>(count);
   });
   group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
+}
+
+/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`) from the walk's seeds in
+/// `ws.bucket` / `ws.count` (by `seed_rows_by_faces`, or any set of faces that meets every
+/// connected piece of every row's level set, grouped by row the same way). The section policy
+/// `S` gives the per-vertex record `S::Vertex`, the point type on a level line `S::Point`,
+/// `S::cross(a, b, sa, sb)` (the point where t crosses the level on the edge a b, sa and sb the
+/// offsets of a.t and b.t from it, of opposite signs), `S::at(a)`, `s.segment(p, q, l, u)` (the
+/// alpha range, possibly in squared units, of a segment of a level line), `s.polygon(points, n,
+/// in_plane, l, u)` (the same for a face with corners on the line: n points, or the whole
+/// triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range; false drops it),
+/// `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`. Alpha is sampled on `cols`
+/// columns over [0, alpha_scale] for the closing samples and stored divided by `alpha_scale`;
+/// `out` must have R rows.
+template <typename S>
+void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
+                     Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+  typedef typename S::Vertex V;
+  typedef typename S::Point P;
+  const std::size_t m = links.size();
+  ws.entries.clear();
   if(ws.stamp.size() != 2 * (m + 1) || ws.epoch > 0xFFFFFFFFu - R) {
     ws.stamp.assign(2 * (m + 1), 0);
     ws.epoch = 0;
@@ -422,7 +640,7 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     const V* a = pick(mask, o, c.y);
     const V* b = pick(mask, c.x, o);
     const double sa = a->t - w.t, sb = b->t - w.t;
-    const P q = S::at(*a, *b, sa / (sa - sb));
+    const P q = S::cross(*a, *b, sa, sb);
     if constexpr(S::linear) { // the range of a segment is that of its end points
       c.lo = std::min(c.lo, q);
       c.hi = std::max(c.hi, q);
@@ -572,6 +790,16 @@ void build_level_set_contour(const std::vector<Face_link>& links, const std::vec
     }
   }
   finish_level_set_contour(s, R, cols, alpha_scale, ws, out);
+}
+
+/// The contour of the level sets t = 0..R-1 over the faces `for_each_face(fn)` visits (vertex
+/// records in `ws.vx`, rows set with `ws.set_rows`): seeds from every face, then the walk (see
+/// seed_rows_by_faces and walk_level_sets).
+template <typename S, typename FaceVisitor>
+void build_level_set_contour(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const int* F, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
+                             FaceVisitor&& for_each_face, Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+  seed_rows_by_faces(F, R, std::forward<FaceVisitor>(for_each_face), ws);
+  walk_level_sets(links, half_edges, s, R, cols, alpha_scale, ws, out);
 }
 
 } // namespace internal

@@ -289,7 +289,11 @@ struct Rigid_section {
     double x, y;
   };
   static constexpr bool linear = false; // the distance to the axis is not linear along a segment
-  static Point at(const Vertex& a, const Vertex& b, double c) { return {a.x + c * (b.x - a.x), a.y + c * (b.y - a.y)}; }
+  // the point where t crosses the level on the edge a b (offsets sa, sb of opposite signs)
+  static Point cross(const Vertex& a, const Vertex& b, double sa, double sb) {
+    const double c = sa / (sa - sb);
+    return {a.x + c * (b.x - a.x), a.y + c * (b.y - a.y)};
+  }
   static Point at(const Vertex& a) { return {a.x, a.y}; }
   static double norm2(const Point& a) { return a.x * a.x + a.y * a.y; }
   // Squared distance from the origin to the segment [a, b] whose end points have squared norms
