@@ -317,7 +317,8 @@ bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball
   const float top_f = static_cast<float>(outside), none = -std::numeric_limits<float>::infinity();
   const int last_row = static_cast<int>(R) - 1;
   std::size_t n_seeds = 0, minima = 0;
-  unsigned fail = 0;
+  unsigned bad = 0; // a vertex on a row line, at or above the outside value, or NaN
+  float t_next_to_disc = none;
   constexpr std::size_t kCandidates = 2;
   if(ws.face_rows.size() < kCandidates * ball.size() + kCandidates) ws.face_rows.resize(kCandidates * ball.size() + 64);
   // floor of x in [-1, outside] by integer conversion (std::floor is a library call without SSE4.1)
@@ -376,9 +377,10 @@ bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball
     const unsigned has_lower = best > none ? 1u : 0u;
     const int fl = floor_of(std::max(-1.0, std::min(tv, top)));
     minima += 1u - has_lower;
-    // (b), (c), without branches
-    fail |= static_cast<unsigned>(!(tv < top)) | (static_cast<unsigned>(static_cast<double>(fl) == tv) & static_cast<unsigned>(tv >= 0) & static_cast<unsigned>(tv <= last)) |
-            (static_cast<unsigned>(tv <= last) & static_cast<unsigned>(highest >= top_f));
+    // (b), (c), without branches (the largest t next to a disc vertex is checked after the loop)
+    bad |= static_cast<unsigned>(!(tv < top));
+    t_next_to_disc = std::max(t_next_to_disc, tv <= last ? highest : none);
+    bad |= static_cast<unsigned>(static_cast<double>(fl) == tv) & static_cast<unsigned>(static_cast<unsigned>(fl) <= static_cast<unsigned>(last_row));
     // rows r with t(p) < r < t(x): from floor(t(p)) + 1 to floor(t(x)) (neither is a row: (b))
     const int lo = std::max(0, floor_of(std::max(-1.0, std::min(tp, top))) + 1);
     const int hi = std::min(last_row, fl);
@@ -395,7 +397,7 @@ bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball
     }
     n_seeds += static_cast<std::size_t>(count);
   }
-  if(fail || minima != 1) return false;
+  if(bad || t_next_to_disc >= top_f || minima != 1) return false;
   group_by_row(ws.face_rows.data(), n_seeds, R, ws.count, ws.next, ws.bucket);
   return true;
 }
