@@ -283,10 +283,11 @@ private:
   }
   void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
   // A vertex outside the ball: beyond the last row and every vertex of a ball.
-  void unset(Thread_state& st, std::size_t v) const {
+  // (rows: unless the contour left them untouched, as the descent seeds do)
+  void unset(Thread_state& st, std::size_t v, bool rows = true) const {
     st.cws.vx[v] = {0.0, m_outside_t};
     st.tf[v] = static_cast<float>(m_outside_t);
-    st.cws.rows[v] = {{static_cast<int>(m_rows), static_cast<int>(m_rows)}}; // set_rows of that t
+    if(rows) st.cws.rows[v] = {{static_cast<int>(m_rows), static_cast<int>(m_rows)}}; // set_rows of that t
   }
   Spin_contour contour_of(std::size_t i, Thread_state& st) const {
     support_ball(i, st.ball, st);
@@ -309,8 +310,9 @@ private:
     }
     // The walk's seeds: by descent on a topological sphere (a few per row), else every face an
     // isoline crosses.
-    if(!(m_sphere && m_descent_seeds &&
-         internal::seed_rows_by_descent(m_stars, st.tf.data(), ball, [](const std::pair<std::size_t, double>& p) { return p.first; }, R, m_outside_t, st.cws))) {
+    const bool by_descent = m_sphere && m_descent_seeds &&
+                            internal::seed_rows_by_descent(m_stars, st.tf.data(), ball, [](const std::pair<std::size_t, double>& p) { return p.first; }, R, m_outside_t, st.cws);
+    if(!by_descent) {
       // Every face an isoline crosses has a corner inside the disc, hence all its corners in the
       // ball (radius L + the longest edge), its owner among them: the faces owned by the ball's
       // vertices, each once. Listed without a data-dependent loop per vertex (most own 0 to 4
@@ -333,7 +335,7 @@ private:
       }, st.cws);
     }
     internal::walk_level_sets(m_links, m_half_edges, sec, R, m_cols, m_alpha_scale, st.cws, c);
-    for(const auto& p : ball) unset(st, p.first);
+    for(const auto& p : ball) unset(st, p.first, !by_descent);
     return c;
   }
   Spin_image image_from(const Ball& ball) const {

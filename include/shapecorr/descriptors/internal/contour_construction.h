@@ -663,7 +663,7 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
       c.x = b;
       c.y = a;
     }
-    c.pt = q;
+    if constexpr(!S::linear) c.pt = q; // (the linear policy needs the end points only)
     return true;
   };
   auto close = [&](Row& w, const Chain& c) {
