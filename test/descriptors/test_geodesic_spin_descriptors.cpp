@@ -82,6 +82,24 @@ void legged_sphere_soup(std::vector<std::array<double, 3>>& P, std::vector<std::
   }
 }
 
+template <typename Mesh>
+void make_legged_sphere(Mesh& m) {
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  legged_sphere_soup(P, T);
+  shapecorr::internal::soup_to_mesh(P, T, m);
+}
+
+// The contour of a ball with the walks seeded by descent, and seeded from every face.
+template <typename G, typename Ball>
+std::pair<shapecorr::Spin_contour, shapecorr::Spin_contour> both_seedings(G& g, const Ball& ball) {
+  g.use_descent_seeds(true);
+  shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
+  g.use_descent_seeds(false);
+  shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
+  return {a, b};
+}
+
 bool same_bits(const shapecorr::Spin_contour& a, const shapecorr::Spin_contour& b) {
   if(a.rows() != b.rows() || a.alphas() != b.alphas()) return false;
   for(std::size_t r = 0; r < a.rows(); ++r)
@@ -317,11 +335,8 @@ TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are uncha
 }
 
 TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of walks seeded from every face", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
-  std::vector<std::array<double, 3>> P;
-  std::vector<std::array<std::size_t, 3>> T;
-  legged_sphere_soup(P, T);
   TestType m;
-  shapecorr::internal::soup_to_mesh(P, T, m);
+  make_legged_sphere(m);
   for(double L : {0.25, 0.5, 0.8}) {
     shapecorr::Geodesic_spin_descriptors<TestType> g(m, SP::support_fraction(L).agd_radius_fraction(0.1));
     REQUIRE(g.is_topological_sphere());
@@ -330,13 +345,10 @@ TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of wa
     typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball ball;
     for(std::size_t i = 0; i < g.number_of_vertices(); i += 7) {
       g.support_ball(i, ball);
-      g.use_descent_seeds(true);
-      const shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
-      g.use_descent_seeds(false);
-      const shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
-      REQUIRE(!b.empty());
-      CHECK(same_bits(a, b));
-      gaps += rows_with_gaps(b, column);
+      const auto ab = both_seedings(g, ball);
+      REQUIRE(!ab.second.empty());
+      CHECK(same_bits(ab.first, ab.second));
+      gaps += rows_with_gaps(ab.second, column);
     }
     if(L >= 0.5) CHECK(gaps > 20); // the isolines do come in several pieces (the case descent seeds must not miss)
   }
@@ -345,22 +357,16 @@ TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of wa
 TEMPLATE_TEST_CASE("GSC on a sphere: balls that rule out descent seeds give the same contours", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
   // Balls the caller made: two minima (distances to the nearer of two points), a vertex exactly
   // on a row line, a ball missing the neighbours of disc vertices, a ball listing a vertex twice.
-  std::vector<std::array<double, 3>> P;
-  std::vector<std::array<std::size_t, 3>> T;
-  legged_sphere_soup(P, T);
   TestType m;
-  shapecorr::internal::soup_to_mesh(P, T, m);
+  make_legged_sphere(m);
   shapecorr::Geodesic_spin_descriptors<TestType> g(m, SP::support_fraction(0.5));
   REQUIRE(g.is_topological_sphere());
   typedef typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball Ball;
   const double h = g.support_length() / static_cast<double>(g.rows());
   auto both_ways = [&](const Ball& ball) {
-    g.use_descent_seeds(true);
-    const shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
-    g.use_descent_seeds(false);
-    const shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
-    CHECK(!b.empty());
-    CHECK(same_bits(a, b));
+    const auto ab = both_seedings(g, ball);
+    CHECK(!ab.second.empty());
+    CHECK(same_bits(ab.first, ab.second));
   };
   Ball a, b;
   for(std::size_t i : {5u, 400u, 1500u}) {
