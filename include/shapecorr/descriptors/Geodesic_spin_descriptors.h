@@ -311,7 +311,7 @@ private:
     // The walk's seeds: by descent on a topological sphere (a few per row), else every face an
     // isoline crosses.
     const bool by_descent = m_sphere && m_descent_seeds &&
-                            internal::seed_rows_by_descent(m_stars, st.tf.data(), ball, [](const std::pair<std::size_t, double>& p) { return p.first; }, R, m_outside_t, st.cws);
+                            internal::seed_rows_by_descent(m_stars, st.tf.data(), ball, R, m_outside_t, st.cws);
     if(!by_descent) {
       // Every face an isoline crosses has a corner inside the disc, hence all its corners in the
       // ball (radius L + the longest edge), its owner among them: the faces owned by the ball's

@@ -292,9 +292,9 @@ struct Contour_workspace {
   }
 };
 
-/// The walk's seeds by descent, for a row coordinate t given at the vertices of `ball` (records
-/// in `ws.vx`, and rounded to float in `tf`; every other vertex at t = `outside`, above every
-/// row) on a topological sphere: a seed (r, f) for every vertex x and row r strictly between t at
+/// The walk's seeds by descent, for a row coordinate t given at the vertices of `ball` ((vertex,
+/// distance) pairs; records in `ws.vx`, and rounded to float in `tf`; every other vertex at t =
+/// `outside`, above every row) on a topological sphere: a seed (r, f) for every vertex x and row r strictly between t at
 /// a strictly lower neighbour p of x (the highest, in float, to have few seeds) and t at x, f a
 /// face on the edge x p; grouped by row into `ws.bucket` / `ws.count` as by seed_rows_by_faces.
 /// They meet every piece of every row's level set when
@@ -309,8 +309,9 @@ struct Contour_workspace {
 /// minimum below r, so it leaves U, through C, by an edge x p with t(p) < r < t(x): a seed of C.
 /// (A neighbour lower in float is lower in double; rows come from the doubles.)
 /// Returns false, and seeds nothing, when a condition fails: the caller uses seed_rows_by_faces.
-template <typename V, typename Ball, typename IndexOf>
-bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball& ball, IndexOf&& index_of, std::size_t R, double outside, Contour_workspace<V>& ws) {
+template <typename V>
+bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const std::vector<std::pair<std::size_t, double>>& ball, std::size_t R, double outside,
+                          Contour_workspace<V>& ws) {
   constexpr std::size_t W = Vertex_stars::kWidth;
   const V* vx = ws.vx.data();
   const double top = outside, last = static_cast<double>(R) - 1.0;
@@ -327,7 +328,7 @@ bool seed_rows_by_descent(const Vertex_stars& stars, const float* tf, const Ball
     return i - (static_cast<double>(i) > x ? 1 : 0);
   };
   for(const auto& b : ball) {
-    const std::size_t v = index_of(b);
+    const std::size_t v = b.first;
     const std::int32_t* nb = stars.nb.data() + W * v;
     float best, highest;
     int k_best;
