@@ -121,6 +121,15 @@ if g:
     if gi:
         line += f"; geodesic spin image from the same ball: {ms(gi)*1e3:.1f} us (GSC/GSI {ms(g)/ms(gi):.1f}x)"
     print(line)
+clk = runs.get("BM_Reference_ClockCycles")
+if clk:
+    ghz = clk["adds"] / (ms(clk) * 1e6)  # one dependent addition per cycle
+    line = f"clock reference: {ghz:.2f} GHz effective (a chain of dependent additions)"
+    if g:
+        line += f"; one GSC = {ms(g) * 1e6 * ghz / 1e3:.0f} k cycles"
+    if gi:
+        line += f", geodesic spin image = {ms(gi) * 1e6 * ghz / 1e3:.0f} k cycles"
+    print(line)
 gt = runs.get("BM_GSC_AllVertices_FromDistances/iterations:3/manual_time")
 if gt:
     per = ms(gt) * 1e3 / gt["vertices"]

@@ -6,8 +6,10 @@
 //  - the GSCs of all vertices from their precomputed balls on every core (throughput per contour);
 //  - the GSC of every vertex including every geodesic computation (diameter, local agd, one
 //    radius-limited march per vertex) vs all-pairs fast-marching distances (what the thesis computed
-//    first, in about 15 minutes, before any descriptor).
+//    first, in about 15 minutes, before any descriptor);
+//  - the core's clock (a chain of dependent additions), to state the one-contour time in cycles.
 // Run through benchmark/run, which writes JSON and the ratios.
+#include "../bench_clock.h"
 #include "../bench_mesh.h"
 
 #include <shapecorr/descriptors.h>
@@ -77,6 +79,10 @@ void BM_Reference_GeodesicSpinImage_FromDistances(benchmark::State& state) {
   for(auto _ : state) benchmark::DoNotOptimize(fx.gsd->geodesic_spin_image(fx.balls[i++ % 64]).values().data());
 }
 BENCHMARK(BM_Reference_GeodesicSpinImage_FromDistances)->Unit(benchmark::kMicrosecond);
+
+// The clock the core ran at, in the same run (interleave the repetitions with
+// --benchmark_enable_random_interleaving=true to follow the machine's swings).
+BENCHMARK(bench::BM_Reference_ClockCycles)->Name("BM_Reference_ClockCycles")->Unit(benchmark::kMicrosecond);
 
 // Throughput once the distances exist: the GSCs of all vertices from their precomputed balls, on
 // every core (each thread with its own workspace); the counter is the wall time per contour.

@@ -104,8 +104,12 @@ public:
   }
 
   /// March from `sources` (distance 0) until every vertex closer than `radius` is accepted.
-  /// `visit(v, d)` is called once per accepted vertex, in increasing distance order; if it returns
-  /// a `bool`, `false` stops the march there.
+  /// `visit(v, d)` is called once per accepted vertex, in the order of acceptance: increasing
+  /// distances except where a triangle update gives a vertex a distance below that of the vertex
+  /// accepted before it (a virtual source can lie nearer to it than to that vertex; 18 to 30
+  /// inversions per 1000 vertices on TOSCA meshes). For the same reason a vertex with a distance
+  /// just below `radius` can be left out, when only a vertex beyond `radius` would have lowered
+  /// it to there. If `visit` returns a `bool`, `false` stops the march there.
   template <typename Visit>
   void march(const std::vector<std::size_t>& sources, double radius, Workspace& w, Visit&& visit) const {
     prepare(w);

@@ -1,0 +1,41 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A reference for the core's clock, to register in a benchmark program: a chain of dependent
+// integer additions, one cycle each on any out-of-order core of the last fifteen years (x86-64
+// and ARM alike), so that the time of another benchmark of the same run converts to cycles of
+// the clock the core really ran at. On the shared machines the effective clock changes between
+// sessions and within minutes (a session measured 1.4 to 2.7 GHz on one core within a minute):
+// cycles compare across machines and phases where microseconds do not (benchmark/README.md).
+#ifndef SHAPECORR_BENCHMARK_BENCH_CLOCK_H
+#define SHAPECORR_BENCHMARK_BENCH_CLOCK_H
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+
+namespace bench {
+
+/// Additions per iteration of BM_Reference_ClockCycles.
+constexpr std::int64_t kClockAdds = 1 << 20;
+
+/// kClockAdds dependent additions per iteration, eight per loop trip (so that the loop's own
+/// instructions run beside the chain, not on it); the empty asm keeps the compiler from folding
+/// them. Its time per iteration is kClockAdds cycles: benchmark/ratios.py derives the effective
+/// clock (counter `adds`) and each benchmark's cycles from it.
+inline void BM_Reference_ClockCycles(benchmark::State& state) {
+  std::uint64_t x = 0;
+  for(auto _ : state) {
+    for(std::int64_t i = 0; i < kClockAdds; i += 8) {
+#define SHAPECORR_BENCH_ADD x += 1; __asm__ volatile("" : "+r"(x));
+      SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD
+      SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD SHAPECORR_BENCH_ADD
+#undef SHAPECORR_BENCH_ADD
+    }
+  }
+  benchmark::DoNotOptimize(x);
+  state.counters["adds"] = static_cast<double>(kClockAdds);
+}
+
+} // namespace bench
+
+#endif
