@@ -164,7 +164,10 @@ TEMPLATE_TEST_CASE("radius-limited distances on obtuse triangles: the full march
     }
   }
   INFO("inversions " << unordered << ", vertices just inside R left out " << near_edge);
-  CHECK(unordered > 0); // (the case is exercised: on this mesh the order is not monotone)
+  // the case is exercised: on this mesh the order is not monotone and some vertices just inside R
+  // are left out (as doc/geodesics.md says; a march made exact would change both)
+  CHECK(unordered > 0);
+  CHECK(near_edge > 0);
 }
 
 TEST_CASE("several components: unreachable vertices are infinitely far", "[geodesics][components]") {
