@@ -3,9 +3,11 @@
 // A reference for the core's clock, to register in a benchmark program: a chain of dependent
 // integer additions, one cycle each on any out-of-order core of the last fifteen years (x86-64
 // and ARM alike), so that the time of another benchmark of the same run converts to cycles of
-// the clock the core really ran at. On the shared machines the effective clock changes between
-// sessions and within minutes (a session measured 1.4 to 2.7 GHz on one core within a minute):
-// cycles compare across machines and phases where microseconds do not (benchmark/README.md).
+// the clock the core really ran at. The shared machines differ in clock between sessions, and
+// within a session other guests' load slows the same code by up to 1.6x while this chain, which
+// needs only one instruction per cycle, still reports the clock (2.87-2.96 GHz on 2026-12-02):
+// times in cycles compare across machines, and their swings tell contention from clock
+// (benchmark/README.md).
 #ifndef SHAPECORR_BENCHMARK_BENCH_CLOCK_H
 #define SHAPECORR_BENCHMARK_BENCH_CLOCK_H
 

@@ -6,6 +6,7 @@
 #include <shapecorr/geodesics.h>
 #include <shapecorr/mesh/primitives.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
 
@@ -135,11 +136,7 @@ TEMPLATE_TEST_CASE("radius-limited distances on obtuse triangles: the full march
   shapecorr::make_icosphere(m, 4);
   test::transform_points(m, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(4 * p.x(), p.y(), 0.5 * p.z()); });
   double longest = 0;
-  for(auto e : edges(m)) {
-    const auto& p = get(CGAL::vertex_point, m, source(e, m));
-    const auto& q = get(CGAL::vertex_point, m, target(e, m));
-    longest = std::max(longest, std::sqrt(CGAL::squared_distance(p, q)));
-  }
+  for(auto e : edges(m)) longest = std::max(longest, CGAL::Polygon_mesh_processing::edge_length(e, m));
   shapecorr::Fast_marching_geodesics<TestType> fmm(m);
   const std::size_t n = fmm.number_of_vertices();
   typename shapecorr::Fast_marching_geodesics<TestType>::Ball ball;

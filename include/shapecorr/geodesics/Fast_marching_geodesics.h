@@ -78,8 +78,8 @@ public:
 
   /// The march itself: accepts vertices by their distance from `sources` up to `radius` (nearly
   /// in increasing order, as `distances_within`), calling `visit(index, distance)` for each; a
-  /// `visit` returning `bool` stops the march with
-  /// `false`. For queries from several threads, give each thread its own `ws`.
+  /// `visit` returning `bool` stops the march with `false`. For queries from several threads,
+  /// give each thread its own `ws`.
   template <typename Visit>
   void march(const std::vector<std::size_t>& sources, double radius, Workspace& ws, Visit&& visit) const {
     m_engine.march(sources, radius, ws, std::forward<Visit>(visit));

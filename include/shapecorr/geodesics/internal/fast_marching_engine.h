@@ -103,7 +103,7 @@ public:
     }
   }
 
-  /// March from `sources` (distance 0) until every vertex closer than `radius` is accepted.
+  /// March from `sources` (distance 0) until the front passes `radius`.
   /// `visit(v, d)` is called once per accepted vertex, in the order of acceptance: increasing
   /// distances except where a triangle update gives a vertex a distance below that of the vertex
   /// accepted before it (a virtual source can lie nearer to it than to that vertex; 18 to 30
