@@ -8,9 +8,9 @@
 // while this chain, which needs only one instruction per cycle, still reports the clock
 // (2.87-2.96 GHz on 2026-12-02): times in cycles compare across machines, and their swings tell
 // contention from clock (benchmark/README.md).
-// The addend is a register the compiler cannot see through: Intel's Golden Cove cores (Sapphire
-// Rapids Xeons, seen here on 2026-12-03) fold additions of an immediate at register renaming,
-// and a chain of `x += 1` ran at 18-19 "GHz" there, 5.4x the 3.5 GHz of `x += y`.
+// The addend is a register the compiler cannot see through: Intel's Golden Cove cores (the Xeon
+// of 2026-12-03) fold additions of an immediate at register renaming, and a chain of `x += 1`
+// ran at 18-19 "GHz" there, 5.4x the 3.5 GHz of `x += y`.
 #ifndef SHAPECORR_BENCHMARK_BENCH_CLOCK_H
 #define SHAPECORR_BENCHMARK_BENCH_CLOCK_H
 
@@ -25,8 +25,9 @@ constexpr std::int64_t kClockAdds = 1 << 20;
 
 /// kClockAdds dependent additions per iteration, eight per loop trip (so that the loop's own
 /// instructions run beside the chain, not on it); the empty asm statements keep the compiler
-/// from folding them and hide the addend's value (an immediate could be folded by the core). Its time per iteration is kClockAdds cycles: benchmark/ratios.py derives the effective
-/// clock (counter `adds`) and each benchmark's cycles from it.
+/// from folding them and hide the addend's value (an immediate could be folded by the core).
+/// Its time per iteration is kClockAdds cycles: benchmark/ratios.py derives the effective clock
+/// (counter `adds`) and each benchmark's cycles from it.
 inline void BM_Reference_ClockCycles(benchmark::State& state) {
   std::uint64_t x = 0, one = 1;
   __asm__ volatile("" : "+r"(one)); // a register of unknown value, not an immediate
