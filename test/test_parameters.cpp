@@ -1,5 +1,5 @@
 // Named parameters: ShapeCorr's and CGAL's tags chain in any order and are read back.
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 #include <shapecorr/parameters.h>
 
 #include <catch2/catch.hpp>
@@ -29,7 +29,7 @@ TEST_CASE("named parameters mix ShapeCorr and CGAL tags", "[parameters]") {
 }
 
 TEST_CASE("parallel loop: every item once, exceptions rethrown, 0 threads = all cores", "[parameters][parallel]") {
-  using shapecorr::internal::parallel_for;
+  using shapecorr::parallel_for;
   std::vector<std::atomic<int>> seen(1000);
   for(auto& s : seen) s = 0;
   parallel_for(seen.size(), 3, [&](std::size_t i, unsigned tid) {
@@ -43,7 +43,7 @@ TEST_CASE("parallel loop: every item once, exceptions rethrown, 0 threads = all 
                   std::runtime_error);
   // 0 threads: all hardware threads. Item 0 waits (up to 5 s) for another thread to take an item:
   // a serial loop would never let it.
-  if(shapecorr::internal::resolve_thread_count(0) < 2) return;
+  if(shapecorr::resolve_thread_count(0) < 2) return;
   std::atomic<bool> other(false);
   parallel_for(4, 0, [&](std::size_t i, unsigned tid) {
     if(tid != 0) other = true;

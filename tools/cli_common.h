@@ -1,8 +1,10 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The command-line program's shared pieces: argument parsing, mesh reading, value output.
+// The command-line program's shared pieces: values from arguments, mesh reading, value output.
 #ifndef SHAPECORR_TOOLS_CLI_COMMON_H
 #define SHAPECORR_TOOLS_CLI_COMMON_H
+
+#include "command.h"
 
 #include <shapecorr/exceptions.h>
 #include <shapecorr/io.h>
@@ -27,47 +29,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 
-struct Usage_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-struct Args {
-  std::vector<std::string> positional;
-  std::map<std::string, std::string> options;
-  bool has(const std::string& k) const { return options.count(k) > 0; }
-  std::string get(const std::string& k, const std::string& def = "") const {
-    auto it = options.find(k);
-    return it == options.end() ? def : it->second;
-  }
-  std::string require(const std::string& k) const {
-    if(!has(k) || get(k).empty()) throw Usage_error("missing --" + k);
-    return get(k);
-  }
-};
-
-inline Args parse(int argc, char** argv, int first) {
-  static const std::vector<std::string> flags = {"json", "repair-non-manifold", "help", "quiet", "exact-area", "distance-fields"};
-  Args a;
-  for(int i = first; i < argc; ++i) {
-    std::string s = argv[i];
-    if(s.rfind("--", 0) == 0) {
-      std::string key = s.substr(2), value;
-      const auto eq = key.find('=');
-      if(eq != std::string::npos) {
-        value = key.substr(eq + 1);
-        key = key.substr(0, eq);
-      } else if(std::find(flags.begin(), flags.end(), key) == flags.end()) {
-        if(i + 1 >= argc) throw Usage_error("option --" + key + " needs a value");
-        value = argv[++i];
-      }
-      a.options[key] = value;
-    } else {
-      a.positional.push_back(s);
-    }
-  }
-  return a;
-}
-
 inline std::size_t to_count(const std::string& s, const std::string& what) {
   char* end = nullptr;
   const long long v = std::strtoll(s.c_str(), &end, 10);
@@ -90,7 +51,7 @@ inline std::string extension(const std::string& path) {
 }
 
 inline Mesh read_mesh(const Args& a, std::size_t index = 0) {
-  if(a.positional.size() <= index) throw Usage_error("missing MESH argument");
+  if(a.positional.size() <= index) throw Usage_error(a.command + ": missing MESH argument");
   Mesh m;
   shapecorr::Read_options opt;
   opt.repair_non_manifold = a.has("repair-non-manifold");
@@ -100,14 +61,20 @@ inline Mesh read_mesh(const Args& a, std::size_t index = 0) {
   return m;
 }
 
+// A file opened for writing, or an Output_error naming it.
+inline std::ofstream open_output(const std::string& path) {
+  std::ofstream out(path);
+  if(!out) throw shapecorr::Output_error(path + ": cannot open for writing");
+  return out;
+}
+
 inline void write_values(const std::string& path, const Mesh& m, const std::vector<double>& values,
                   const std::vector<std::size_t>& highlight = {}) {
   const std::string ext = extension(path);
   if(ext == "ply") {
     shapecorr::write_colored_ply(path, m, values, highlight);
   } else if(ext == "csv" || ext == "txt") {
-    std::ofstream out(path);
-    if(!out) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": cannot open for writing");
+    std::ofstream out = open_output(path);
     out.precision(9);
     for(double v : values) out << v << "\n";
   } else {
@@ -130,18 +97,15 @@ inline std::vector<std::size_t> parse_ids(const std::string& s, std::size_t n) {
   std::string tok;
   while(std::getline(ss, tok, ',')) {
     const std::size_t v = to_count(tok, "vertex id");
-    if(v >= n) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::invalid_argument,
-                                              "vertex id " + tok + " out of range (mesh has " + std::to_string(n) + " vertices)");
+    if(v >= n) throw shapecorr::Invalid_argument("vertex id " + tok + " out of range (mesh has " + std::to_string(n) + " vertices)");
     ids.push_back(v);
   }
-  if(ids.empty()) throw Usage_error("--source needs at least one vertex id");
+  if(ids.empty()) throw Usage_error("a list of vertex ids needs at least one id");
   return ids;
 }
 
-
-// Commands defined in other translation units.
-int cmd_rigid_descriptors(const Args& a);
-int cmd_match(const Args& a);
+// Whether notes and progress go to stderr (no --quiet).
+inline bool verbose(const Args& a) { return !a.has("quiet"); }
 
 } // namespace cli
 

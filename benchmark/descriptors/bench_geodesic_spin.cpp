@@ -92,18 +92,18 @@ void BM_GSC_AllVertices_FromDistances(benchmark::State& state) {
   static std::vector<GSD::Ball> all; // every vertex's ball (about 150 MB on the wolf)
   if(all.empty()) {
     all.resize(n);
-    shapecorr::internal::parallel_for(n, 0, [&](std::size_t i, unsigned) { fx.gsd->support_ball(i, all[i]); });
+    shapecorr::parallel_for(n, 0, [&](std::size_t i, unsigned) { fx.gsd->support_ball(i, all[i]); });
   }
   std::vector<std::size_t> points(n);
   for(auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
-    shapecorr::internal::parallel_for(n, 0, [&](std::size_t i, unsigned) { points[i] = fx.gsd->geodesic_spin_contour(all[i]).size(); });
+    shapecorr::parallel_for(n, 0, [&](std::size_t i, unsigned) { points[i] = fx.gsd->geodesic_spin_contour(all[i]).size(); });
     const auto t1 = std::chrono::steady_clock::now();
     state.SetIterationTime(std::chrono::duration<double>(t1 - t0).count());
     benchmark::DoNotOptimize(points.data());
   }
   state.counters["vertices"] = static_cast<double>(n);
-  state.counters["threads"] = static_cast<double>(shapecorr::internal::resolve_thread_count(0));
+  state.counters["threads"] = static_cast<double>(shapecorr::resolve_thread_count(0));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 BENCHMARK(BM_GSC_AllVertices_FromDistances)->Unit(benchmark::kMillisecond)->Iterations(3)->UseManualTime();

@@ -37,12 +37,12 @@ struct Fixture {
   Fixture() {
     name = bench::load_mesh<Mesh>(mesh, "tosca5k/meshes/wolf0.off", [](Mesh& m) { shapecorr::make_icosphere(m, 5); }, "icosphere(5)");
     shapecorr::Exact_geodesics<Mesh> exact(mesh);
-    D = shapecorr::internal::diameter_by_sweeps(exact, 0, 4);
+    D = shapecorr::geodesic_diameter(mesh, SP::geodesic_engine(&exact).number_of_iterations(4));
     std::vector<vertex_descriptor> s;
     shapecorr::furthest_point_sampling(mesh, 50, std::back_inserter(s), SP::random_seed(1u).geodesic_engine(&exact));
     std::vector<Eigen::VectorXd> ex(s.size());
     for(vertex_descriptor v : s) sources50.push_back(v.idx());
-    shapecorr::internal::parallel_for(s.size(), 0, [&](std::size_t i, unsigned) { ex[i] = exact.distances_from(sources50[i]); });
+    shapecorr::parallel_for(s.size(), 0, [&](std::size_t i, unsigned) { ex[i] = exact.distances_from(sources50[i]); });
     exact50 = std::move(ex);
   }
   template <typename Row>

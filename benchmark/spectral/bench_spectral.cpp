@@ -23,11 +23,11 @@ typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::
 
 struct Fixture {
   Mesh mesh;
-  shapecorr::internal::Laplace_operators op;
+  shapecorr::Laplace_operators op;
   shapecorr::Laplace_beltrami_eigenbasis basis;
   Fixture() {
     bench::load_mesh<Mesh>(mesh, "tosca5k/meshes/wolf0.off", [](Mesh& m) { shapecorr::make_icosphere(m, 5); }, "icosphere(5)");
-    op = shapecorr::internal::laplace_operators(mesh, shapecorr::parameters::default_values());
+    op = shapecorr::laplace_operators(mesh);
     basis = shapecorr::compute_laplace_beltrami_eigenbasis(mesh, 300);
   }
 };

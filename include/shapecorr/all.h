@@ -9,8 +9,10 @@
 #include <shapecorr/io.h>
 #include <shapecorr/mesh.h>
 #include <shapecorr/mesh/primitives.h>
+#include <shapecorr/operators.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/sampling.h>
 #include <shapecorr/spectral.h>
 #include <shapecorr/descriptors.h>
+#include <shapecorr/evaluation/descriptor_ranking.h>
 #endif

@@ -14,7 +14,7 @@
 #include <shapecorr/descriptors/Spin_contour.h>
 #include <shapecorr/descriptors/Spin_descriptors.h>
 #include <shapecorr/descriptors/Spin_image.h>
+#include <shapecorr/descriptors/match_contours.h>
 #include <shapecorr/descriptors/match_descriptors.h>
-#include <shapecorr/descriptors/write_spin_descriptor_plot.h>
 
 #endif

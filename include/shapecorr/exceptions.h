@@ -1,7 +1,8 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// \file exceptions.h
-/// The one small hierarchy of errors that ShapeCorr raises for bad data from the world.
+/// The one small hierarchy of errors that ShapeCorr raises: bad input data, parameters outside their
+/// domain, files that cannot be written, solvers that fail. All derive from `shapecorr::Error`.
 #ifndef SHAPECORR_EXCEPTIONS_H
 #define SHAPECORR_EXCEPTIONS_H
 
@@ -29,8 +30,7 @@ enum class Mesh_defect {
   non_manifold_vertex,    ///< a vertex whose incident faces do not form a single fan
   isolated_vertex,        ///< a vertex used by no face
   boundary,               ///< the surface has boundary edges (where a closed one is required)
-  several_components,     ///< more than one connected component (where one is required)
-  invalid_argument        ///< a parameter out of its domain (a vertex id past the end, a negative radius...)
+  several_components      ///< more than one connected component (where one is required)
 };
 
 /// Name of a defect, as used in reports and messages (`"non_manifold_edge"`).
@@ -46,7 +46,6 @@ inline const char* to_string(Mesh_defect d) {
     case Mesh_defect::isolated_vertex: return "isolated_vertex";
     case Mesh_defect::boundary: return "boundary";
     case Mesh_defect::several_components: return "several_components";
-    case Mesh_defect::invalid_argument: return "invalid_argument";
   }
   return "unknown";
 }
@@ -61,6 +60,22 @@ public:
   Mesh_defect defect() const { return m_defect; }
 private:
   Mesh_defect m_defect;
+};
+
+/// \ingroup PkgShapeCorrCore
+/// A parameter outside its domain: a vertex id past the end, a negative radius, a support of zero,
+/// descriptors of different shapes compared. The message names the parameter and its valid range.
+class Invalid_argument : public Error {
+public:
+  using Error::Error;
+};
+
+/// \ingroup PkgShapeCorrCore
+/// A file that cannot be written (missing directory, no permission, disk full); the message names
+/// the file.
+class Output_error : public Error {
+public:
+  using Error::Error;
 };
 
 /// \ingroup PkgShapeCorrCore

@@ -13,4 +13,5 @@
 #include <shapecorr/geodesics/compute_geodesic_distances.h>
 #include <shapecorr/geodesics/geodesic_diameter.h>
 #include <shapecorr/geodesics/geodesic_method.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
 #endif

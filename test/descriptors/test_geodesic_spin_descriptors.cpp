@@ -196,6 +196,15 @@ TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted"
       REQUIRE(a.size() > 10);
       CHECK(shapecorr::contour_l1_distance(a, b) < 1e-9);
     }
+  // the same through the normalization object
+  const shapecorr::Geodesic_spin_descriptors<TestType> gn(cut, SP::support_fraction(0.1).agd_radius_fraction(0.1).geodesic_spin_normalization(gw.normalization()));
+  CHECK(gn.geodesic_diameter() == gw.geodesic_diameter());
+  CHECK(gn.alpha_offset() == gw.alpha_offset());
+  CHECK(gn.alpha_scale() == gw.alpha_scale());
+  CHECK(gn.alpha_scale() != shapecorr::Geodesic_spin_descriptors<TestType>(cut, SP::support_fraction(0.1).agd_radius_fraction(0.1)).alpha_scale());
+  CHECK(gn.geodesic_spin_contour(vc[3 * 51 + 10]).points() == gc.geodesic_spin_contour(vc[3 * 51 + 10]).points());
+  // individual parameters take precedence over the normalization object
+  CHECK(shapecorr::Geodesic_spin_descriptors<TestType>(cut, SP::geodesic_spin_normalization(gw.normalization()).agd_scale(2.0)).alpha_scale() == 2.0);
   // the global agd, by contrast, sees the cut
   const auto npg = SP::support_fraction(0.1).agd_radius_fraction(0.0).number_of_sources(0).geodesic_diameter(D).agd_offset(0.0).agd_scale(D);
   const shapecorr::Geodesic_spin_descriptors<TestType> hw(whole, npg), hc(cut, npg);
@@ -304,7 +313,7 @@ TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[
   CHECK(batch[0].row_spacing() == Approx(1.0 / 64));
   // a rigid Spin Contour cannot be compared with a geodesic one
   shapecorr::Spin_contour rigid(64, 1.0);
-  CHECK_THROWS_AS(shapecorr::contour_l1_distance(rigid, batch[0]), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(rigid, batch[0]), shapecorr::Invalid_argument);
 }
 
 TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are unchanged", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
@@ -323,7 +332,7 @@ TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are uncha
   typename shapecorr::Geodesic_spin_descriptors<TestType>::Ball bad;
   for(std::size_t v = 0; v < n; ++v) bad.push_back({v, 0.0});
   bad.push_back({n, 0.0});
-  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_argument);
   std::size_t k = 0;
   for(std::size_t v : {100u, 200u, 305u}) {
     g.support_ball(v, ball);
@@ -451,17 +460,17 @@ TEST_CASE("geodesic spin descriptors: errors", "[descriptors][gsc]") {
   test::Surface_mesh m;
   shapecorr::make_grid(m, 4, 4);
   using G = shapecorr::Geodesic_spin_descriptors<test::Surface_mesh>;
-  CHECK_THROWS_AS(G(m, SP::support_fraction(0.0)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::support_fraction(-1.0)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::agd_radius_fraction(-0.1)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::image_rows(1)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::agd_scale(0.0)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::agd_offset(std::nan(""))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(G(m, SP::geodesic_diameter(std::nan(""))), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(G(m, SP::support_fraction(0.0)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::support_fraction(-1.0)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::agd_radius_fraction(-0.1)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::image_rows(1)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::agd_scale(0.0)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::agd_offset(std::nan(""))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(G(m, SP::geodesic_diameter(std::nan(""))), shapecorr::Invalid_argument);
   test::Surface_mesh empty;
   CHECK_THROWS_AS(G(empty), shapecorr::Invalid_input);
   const G g(m);
   G::Ball bad = {{0, 0.0}, {999, 0.1}};
-  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(g.geodesic_spin_contours({0, 999}), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(g.geodesic_spin_contour(bad), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(g.geodesic_spin_contours({0, 999}), shapecorr::Invalid_argument);
 }

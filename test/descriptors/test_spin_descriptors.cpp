@@ -319,7 +319,7 @@ TEST_CASE("contour L1 distance: zero on identical, symmetric, equal to the kd-tr
   shapecorr::Spin_contour empty(120);
   CHECK(shapecorr::contour_l1_distance(empty, empty) == 0.0);
   CHECK(std::isinf(shapecorr::contour_l1_distance(empty, c[0])));
-  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Spin_contour(60), c[0]), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Spin_contour(60), c[0]), shapecorr::Invalid_argument);
 }
 
 TEMPLATE_TEST_CASE("axes fall back to the normal where they are undefined", "[descriptors][axes]", test::Surface_mesh, test::Polyhedron) {
@@ -460,15 +460,15 @@ TEST_CASE("spin image comparison: correlation of proportional images is 1, simil
   CHECK(shapecorr::spin_image_correlation(a, b).second == 12u);
   CHECK(shapecorr::Spin_image_distance()(a, b) == Approx(0.0).margin(1e-6));
   CHECK(shapecorr::spin_image_similarity(a, b) > shapecorr::spin_image_similarity(a, c));
-  CHECK_THROWS_AS(shapecorr::spin_image_correlation(a, shapecorr::Spin_image(3, 3, 1.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::spin_image_correlation(a, shapecorr::Spin_image(3, 3, 1.0)), shapecorr::Invalid_argument);
 }
 
 TEST_CASE("spin descriptors: bad parameters and meshes are typed errors", "[descriptors][errors]") {
   test::Surface_mesh m;
   shapecorr::make_icosphere(m, 1);
-  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::support_length(-1.0)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::image_rows(std::size_t(1))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::lrf_radius(0.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::support_length(-1.0)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::image_rows(std::size_t(1))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(m, SP::lrf_radius(0.0)), shapecorr::Invalid_argument);
   test::Surface_mesh empty;
   CHECK_THROWS_AS(shapecorr::Spin_descriptors<test::Surface_mesh>(empty), shapecorr::Invalid_input);
   test::Surface_mesh bad;
@@ -598,12 +598,12 @@ TEST_CASE("contour distance field of hand-made contours: analytic distances, ran
   CHECK(shapecorr::approximate_contour_l1_distance(fe, fe) == 0.0);
   CHECK(std::isinf(shapecorr::approximate_contour_l1_distance(fe, fl)));
   CHECK(std::isinf(fe.distance(0, 0.5)));
-  CHECK_THROWS_AS(shapecorr::approximate_contour_l1_distance(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12)), fl), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Contour_distance_field(line, 1), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(fl.distance(10, 0.5), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Spin_contour(12)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Contour_distance_field(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::approximate_contour_l1_distance(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12)), fl), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Contour_distance_field(line, 1), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(fl.distance(10, 0.5), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Spin_contour(12)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(fl.sum_of_distances(shapecorr::Contour_distance_field(shapecorr::Spin_contour(12))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Contour_distance_field(shapecorr::Spin_contour(0)), shapecorr::Invalid_argument);
 }
 
 namespace {
@@ -706,13 +706,13 @@ TEST_CASE("contour nearest-point index of hand-made contours: analytic distances
   CHECK(std::isinf(shapecorr::contour_l1_distance(xe, xl)));
   CHECK(std::isinf(xe.distance(0, 0.5f)));
   CHECK(xe.memory_bytes() < xl.memory_bytes());
-  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12)), xl), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(xl.sum_of_distances(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 0), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 65537), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(0)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(xl.distance(10, 0.5f), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12)), xl), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(xl.sum_of_distances(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(12))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(line, 65537), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Contour_nearest_point_index(shapecorr::Spin_contour(0)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(xl.distance(10, 0.5f), shapecorr::Invalid_argument);
   // a rigid and a geodesic contour (rows on different lines) are not comparable
   const shapecorr::Contour_nearest_point_index xg(shapecorr::Spin_contour(10, 1.0, 0.0, 1.0));
-  CHECK_THROWS_AS(shapecorr::contour_l1_distance(xg, xl), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::contour_l1_distance(xg, xl), shapecorr::Invalid_argument);
 }

@@ -57,10 +57,10 @@ TEST_CASE("descriptor ranking: hit rate and geodesic error on a line of targets"
   CHECK(s.geodesic_error_symmetric[0] == 0.0);
   // k = 2: source 0 ranks 3, 2 -> errors 0, min(1, 2) = 1; source 1 ranks 7, 6 -> 0, min(1, 1) = 1
   CHECK(s.geodesic_error_symmetric[1] == Approx((0.5 + 0.5) / 2 / 2));
-  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, std::vector<std::size_t>{4}, geo_sym, 2.0), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3}, geo, 2.0), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3, 10}, geo, 2.0), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, 0.0), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, std::vector<std::size_t>{4}, geo_sym, 2.0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3}, geo, 2.0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, std::vector<std::size_t>{3, 10}, geo, 2.0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::evaluate_descriptor_ranking(2, 10, dist, truth, geo, 0.0), shapecorr::Invalid_argument);
 }
 
 TEST_CASE("reading .vts files", "[evaluation][io]") {

@@ -50,6 +50,6 @@ TEMPLATE_TEST_CASE("local average geodesic distance: sphere and plane closed for
     TestType m;
     shapecorr::make_icosphere(m, 1);
     auto agd = get(CGAL::dynamic_vertex_property_t<double>(), m);
-    CHECK_THROWS_AS(shapecorr::compute_local_average_geodesic_distance(m, 0.0, agd), shapecorr::Invalid_input);
+    CHECK_THROWS_AS(shapecorr::compute_local_average_geodesic_distance(m, 0.0, agd), shapecorr::Invalid_argument);
   }
 }

@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include <shapecorr/geodesics.h>
+#include <shapecorr/sampling.h>
 #include <shapecorr/mesh/primitives.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -123,7 +124,7 @@ TEMPLATE_TEST_CASE("radius-limited distances touch only the geodesic ball", "[ge
   fmm.distances_within(3, R, ball);
   CHECK(ball.size() > 0);
   CHECK(ball.front().first == 3);
-  CHECK_THROWS_AS(fmm.distances_within(0, -1.0, ball), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(fmm.distances_within(0, -1.0, ball), shapecorr::Invalid_argument);
 }
 
 TEMPLATE_TEST_CASE("radius-limited distances on obtuse triangles: the full march's values, all but the last edge's worth", "[geodesics][radius]",
@@ -200,9 +201,9 @@ TEST_CASE("bad arguments raise typed errors", "[geodesics][errors]") {
   test::Surface_mesh m;
   shapecorr::make_icosphere(m, 1);
   shapecorr::Heat_method_geodesics<test::Surface_mesh> heat(m);
-  CHECK_THROWS_AS(heat.distances_from(1000), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(heat.distances_to_set({}), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::Heat_method_geodesics<test::Surface_mesh>(m, SP::time_step_factor(-1.0)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(heat.distances_from(1000), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(heat.distances_to_set({}), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::Heat_method_geodesics<test::Surface_mesh>(m, SP::time_step_factor(-1.0)), shapecorr::Invalid_argument);
   test::Surface_mesh empty;
   CHECK_THROWS_AS(shapecorr::Heat_method_geodesics<test::Surface_mesh>(empty), shapecorr::Invalid_input);
   CHECK_THROWS_AS(shapecorr::Fast_marching_geodesics<test::Surface_mesh>(empty), shapecorr::Invalid_input);

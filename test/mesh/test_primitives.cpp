@@ -23,5 +23,5 @@ TEMPLATE_TEST_CASE("generated meshes are valid", "[mesh][primitives]", test::Sur
   CHECK(rg.is_valid());
   CHECK(rg.boundary_edges == 2 * (5 + 4));
   CHECK(rg.area == Approx(1.0));
-  CHECK_THROWS_AS(shapecorr::make_icosphere(sphere, -1), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::make_icosphere(sphere, -1), shapecorr::Invalid_argument);
 }

@@ -25,7 +25,7 @@ shapecorr::Mesh_defect defect_of(const shapecorr::Mesh_report& r, shapecorr::Mes
     return e.defect();
   }
   FAIL("require_valid accepted a bad mesh");
-  return shapecorr::Mesh_defect::invalid_argument;
+  return shapecorr::Mesh_defect::unreadable_file; // not reached: FAIL throws
 }
 } // namespace
 

@@ -128,8 +128,8 @@ TEST_CASE("eigenbasis save and load round-trip; bad files are typed errors", "[s
 TEST_CASE("eigenbasis errors: k out of range, isolated vertex, solver failure", "[spectral][eigenbasis][errors]") {
   test::Surface_mesh m;
   shapecorr::make_icosphere(m, 1);
-  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 0), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 43), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(m, 43), shapecorr::Invalid_argument);
   CHECK(shapecorr::compute_laplace_beltrami_eigenbasis(m, 42).number_of_eigenpairs() == 42); // all of them
   test::Surface_mesh iso;
   shapecorr::make_icosphere(iso, 1);

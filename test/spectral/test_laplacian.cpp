@@ -3,7 +3,7 @@
 // Laplacian's degrees.
 #include "spectral_test_helpers.h"
 
-#include <shapecorr/spectral/laplacian.h>
+#include <shapecorr/operators/laplacian.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 

@@ -118,13 +118,13 @@ TEST_CASE("spectral descriptors: parameters out of range and foreign bases are t
   const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 20);
   const auto bo = shapecorr::compute_laplace_beltrami_eigenbasis(other, 20);
   auto map = m.add_property_map<test::Surface_mesh::Vertex_index, std::vector<double>>("v:d").first;
-  CHECK_THROWS_AS(shapecorr::compute_heat_kernel_signature(m, map, SP::eigenbasis(&bo)), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::heat_kernel_signature_matrix(b, SP::number_of_scales(std::size_t(0))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::heat_kernel_signature_matrix(b, SP::time_range(std::make_pair(-1.0, 1.0))), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::scale_invariant_heat_kernel_signature_matrix(b, SP::frequency_range(std::make_pair(2, 5000))), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::compute_heat_kernel_signature(m, map, SP::eigenbasis(&bo)), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::heat_kernel_signature_matrix(b, SP::number_of_scales(std::size_t(0))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::heat_kernel_signature_matrix(b, SP::time_range(std::make_pair(-1.0, 1.0))), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::scale_invariant_heat_kernel_signature_matrix(b, SP::frequency_range(std::make_pair(2, 5000))), shapecorr::Invalid_argument);
   const auto one = shapecorr::compute_laplace_beltrami_eigenbasis(m, 1); // only the zero eigenvalue
-  CHECK_THROWS_AS(shapecorr::wave_kernel_signature_matrix(one), shapecorr::Invalid_input);
-  CHECK_THROWS_AS(shapecorr::spectral_descriptor_distance(std::vector<double>(3), std::vector<double>(4)), shapecorr::Invalid_input);
+  CHECK_THROWS_AS(shapecorr::wave_kernel_signature_matrix(one), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::spectral_descriptor_distance(std::vector<double>(3), std::vector<double>(4)), shapecorr::Invalid_argument);
 }
 
 namespace {
@@ -164,4 +164,21 @@ TEST_CASE("TOSCA: ground-truth matches rank in the top percent by WKS distance",
     INFO(sa << " -> " << sb << ": mean rank of the true match " << mean_rank << "% of " << WB.rows() << " vertices");
     CHECK(mean_rank < std::get<2>(pair));
   }
+}
+
+TEMPLATE_TEST_CASE("spectral_signature_matrix dispatches to the signature it names", "[spectral][descriptors]", test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  test::make_ellipsoid(m, 2);
+  const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 30);
+  const auto np = SP::number_of_scales(std::size_t(17));
+  using shapecorr::Spectral_signature;
+  // exactly the matrices of the individual functions, with the same parameters
+  CHECK(shapecorr::spectral_signature_matrix(b, Spectral_signature::HKS, np) == shapecorr::heat_kernel_signature_matrix(b, np));
+  CHECK(shapecorr::spectral_signature_matrix(b, Spectral_signature::WKS, np) == shapecorr::wave_kernel_signature_matrix(b, np));
+  CHECK(shapecorr::spectral_signature_matrix(b, Spectral_signature::SIHKS, np) == shapecorr::scale_invariant_heat_kernel_signature_matrix(b, np));
+  CHECK(shapecorr::spectral_signature_matrix(b, Spectral_signature::HKS, np).cols() == 17);
+  for(Spectral_signature s : {Spectral_signature::HKS, Spectral_signature::WKS, Spectral_signature::SIHKS})
+    CHECK(shapecorr::spectral_signature_from_string(shapecorr::to_string(s)) == s);
+  CHECK_THROWS_AS(shapecorr::spectral_signature_from_string("HKS"), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::spectral_signature_from_string(""), shapecorr::Invalid_argument);
 }

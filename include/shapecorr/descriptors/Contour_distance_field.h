@@ -46,8 +46,8 @@ public:
   /// \throws Invalid_input when `alpha_samples` < 2 or the contour has no rows
   explicit Contour_distance_field(const Spin_contour& contour, std::size_t alpha_samples = 121)
     : m_contour(contour), m_samples(alpha_samples) {
-    if(alpha_samples < 2) throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: need at least 2 alpha samples");
-    if(contour.rows() == 0) throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: the contour has no rows");
+    if(alpha_samples < 2) throw Invalid_argument("contour distance field: need at least 2 alpha samples");
+    if(contour.rows() == 0) throw Invalid_argument("contour distance field: the contour has no rows");
     if(contour.empty()) return;
     const auto& a = contour.alphas();
     const auto range = std::minmax_element(a.begin(), a.end());
@@ -86,7 +86,7 @@ public:
   /// for an empty contour).
   /// \throws Invalid_input when r is not a row
   double distance(std::size_t r, double alpha) const {
-    if(r >= rows()) throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: row " + std::to_string(r) + " of " + std::to_string(rows()));
+    if(r >= rows()) throw Invalid_argument("contour distance field: row " + std::to_string(r) + " of " + std::to_string(rows()));
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
     const std::uint16_t* row = m_field.data() + r * m_samples;
     const double inv = 1.0 / m_step, cmax = static_cast<double>(m_samples - 1);
@@ -142,7 +142,7 @@ public:
 private:
   void require_rows(std::size_t r) const {
     if(r != rows())
-      throw Invalid_input(Mesh_defect::invalid_argument, "contour distance field: " + std::to_string(r) + " rows against " + std::to_string(rows()));
+      throw Invalid_argument("contour distance field: " + std::to_string(r) + " rows against " + std::to_string(rows()));
   }
   struct Query {
     float frac;

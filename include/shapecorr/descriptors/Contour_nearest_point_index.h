@@ -60,9 +60,9 @@ public:
   explicit Contour_nearest_point_index(const Spin_contour& contour, std::size_t cells_per_row = 128)
     : m_contour(contour), m_cells(cells_per_row) {
     if(cells_per_row == 0 || cells_per_row > 65536)
-      throw Invalid_input(Mesh_defect::invalid_argument, "contour nearest-point index: cells_per_row must be in [1, 65536]");
+      throw Invalid_argument("contour nearest-point index: cells_per_row must be in [1, 65536]");
     if(contour.rows() == 0 || contour.rows() > 65535)
-      throw Invalid_input(Mesh_defect::invalid_argument, "contour nearest-point index: the contour has " + std::to_string(contour.rows()) + " rows (1 to 65535 supported)");
+      throw Invalid_argument("contour nearest-point index: the contour has " + std::to_string(contour.rows()) + " rows (1 to 65535 supported)");
     if(contour.empty()) return;
     const auto range = std::minmax_element(contour.alphas().begin(), contour.alphas().end());
     m_lo = std::min(0.0, static_cast<double>(*range.first));
@@ -95,7 +95,7 @@ public:
   /// contour).
   /// \throws Invalid_input when r is not a row
   double distance(std::size_t r, float alpha) const {
-    if(r >= rows()) throw Invalid_input(Mesh_defect::invalid_argument, "contour nearest-point index: row " + std::to_string(r) + " of " + std::to_string(rows()));
+    if(r >= rows()) throw Invalid_argument("contour nearest-point index: row " + std::to_string(r) + " of " + std::to_string(rows()));
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
     const std::uint32_t r32 = static_cast<std::uint32_t>(r);
     return std::sqrt(nearest2(r32, static_cast<double>(alpha), cell_of(r32, alpha)));
@@ -107,7 +107,7 @@ public:
   /// \throws Invalid_input when the numbers of rows differ
   double sum_of_distances(const Contour_nearest_point_index& other, double bound = std::numeric_limits<double>::infinity()) const {
     if(other.rows() != rows())
-      throw Invalid_input(Mesh_defect::invalid_argument, "contour nearest-point index: " + std::to_string(other.rows()) + " rows against " + std::to_string(rows()));
+      throw Invalid_argument("contour nearest-point index: " + std::to_string(other.rows()) + " rows against " + std::to_string(rows()));
     if(other.m_query.empty()) return 0.0;
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
     const Query* q = other.m_query.data();

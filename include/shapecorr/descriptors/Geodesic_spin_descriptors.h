@@ -13,9 +13,11 @@
 #include <shapecorr/geodesics/Fast_marching_geodesics.h>
 #include <shapecorr/geodesics/average_geodesic_distance.h>
 #include <shapecorr/geodesics/geodesic_diameter.h>
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 #include <shapecorr/internal/progress.h>
 #include <shapecorr/parameters.h>
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <atomic>
@@ -63,6 +65,20 @@ struct Geodesic_section {
 } // namespace internal
 
 /// \ingroup PkgShapeCorrDescriptors
+/// The lengths that normalize geodesic spin descriptors: beta = gd / (support_fraction x
+/// `geodesic_diameter`), alpha = (agd - `agd_offset`) / `agd_scale` (mesh units). Descriptors of two
+/// shapes are comparable when both use the same normalization. To match a part of a shape (or
+/// any source) against a whole target, build the target's descriptors first and give the
+/// source's `parameters::geodesic_spin_normalization(target.normalization())`: the part is then
+/// described with the whole shape's lengths, which its own (smaller) diameter and agd range would
+/// distort.
+struct Geodesic_spin_normalization {
+  double geodesic_diameter = 0; ///< D; 0 (the default) means "not given: compute it"
+  double agd_offset = 0;        ///< subtracted from the agd
+  double agd_scale = 0;         ///< divides agd - agd_offset
+};
+
+/// \ingroup PkgShapeCorrDescriptors
 /// The Geodesic Spin Contour (GSC) and the geodesic spin image of the vertices of a mesh (thesis
 /// chapter 4, ALGORITHMS.md): for a point P, every surface point Q gets the coordinates
 /// `(alpha, beta) = (agd(Q), gd(P, Q))`, agd the average geodesic distance (global, or local
@@ -77,7 +93,7 @@ struct Geodesic_section {
 /// chose alpha = agd / D; with the local agd (values below r = 0.15 D) that squeezes every contour
 /// into a band of about 1/60 of the alpha axis (see doc/geodesic_spin_contour.md), so the range is
 /// the default and `agd_offset(0).agd_scale(D)` gives the other choice. To compare a part with a
-/// whole shape, give both the whole shape's D, offset and scale. Compare contours with
+/// whole shape, give both the whole shape's normalization (`geodesic_spin_normalization`). Compare contours with
 /// `contour_l1_distance` (the same function as the rigid Spin Contour), images with
 /// `spin_image_correlation`.
 ///
@@ -97,6 +113,7 @@ struct Geodesic_section {
 /// | `geodesic_engine` | global agd: the engine of its distance fields | pointer to a `GeodesicDistanceEngine` | this object's fast marching |
 /// | `geodesic_diameter` | D in mesh units (e.g. the whole shape's D for a part of it) | `double` | computed (farthest-point sweeps) |
 /// | `agd_offset`, `agd_scale` | alpha = (agd - offset) / scale, mesh units | `double` | min agd, max agd - min agd (D when the agd is constant) |
+/// | `geodesic_spin_normalization` | D, offset and scale at once, e.g. another object's `normalization()` (the three parameters above, when given, take precedence) | `Geodesic_spin_normalization` | computed |
 /// | `image_rows`, `image_columns` | beta samples (rows), alpha samples (columns) | `std::size_t` | 64, 64 |
 /// | `number_of_threads` | threads of the batch function and of the agd | `unsigned` | all |
 /// | `progress_callback` | `f(done, total)` during the agd | `std::function<void(size_t, size_t)>` | none |
@@ -124,15 +141,18 @@ public:
     m_rows = choose_parameter(get_parameter(np, internal_np::image_rows), std::size_t(64));
     m_cols = choose_parameter(get_parameter(np, internal_np::image_columns), std::size_t(64));
     if(!(support_fraction > 0) || !std::isfinite(support_fraction))
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: support_fraction must be positive");
+      throw Invalid_argument("geodesic spin descriptors: support_fraction must be positive");
     if(!(radius_fraction >= 0) || !std::isfinite(radius_fraction))
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_radius_fraction must be >= 0 (0: global agd)");
+      throw Invalid_argument("geodesic spin descriptors: agd_radius_fraction must be >= 0 (0: global agd)");
     if(m_rows < 2 || m_cols < 1)
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: need at least 2 rows and 1 column");
-    m_diameter = choose_parameter(get_parameter(np, internal_np::geodesic_diameter), -1.0);
+      throw Invalid_argument("geodesic spin descriptors: need at least 2 rows and 1 column");
+    const Geodesic_spin_normalization imposed =
+        choose_parameter(get_parameter(np, internal_np::geodesic_spin_normalization), Geodesic_spin_normalization());
+    const bool normalized = imposed.geodesic_diameter != 0;
+    m_diameter = choose_parameter(get_parameter(np, internal_np::geodesic_diameter), normalized ? imposed.geodesic_diameter : -1.0);
     if(m_diameter < 0) m_diameter = internal::diameter_by_sweeps(m_engine, internal::canonical_start_vertex(a), 6);
     if(!(m_diameter > 0) || !std::isfinite(m_diameter))
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: the geodesic diameter is zero or not finite");
+      throw Invalid_argument("geodesic spin descriptors: the geodesic diameter is zero or not finite");
     m_support = support_fraction * m_diameter;
     m_radius = radius_fraction * m_diameter;
     // the average geodesic distance of every vertex
@@ -149,12 +169,13 @@ public:
     }
     // alpha = (agd - offset) / scale: by default the range of the agd over the mesh maps to [0, 1]
     const auto range = std::minmax_element(m_agd.begin(), m_agd.end());
-    m_alpha_offset = choose_parameter(get_parameter(np, internal_np::agd_offset), *range.first);
+    m_alpha_offset = choose_parameter(get_parameter(np, internal_np::agd_offset), normalized ? imposed.agd_offset : *range.first);
     const double spread = *range.second - *range.first;
     // a (numerically) constant agd, e.g. a local radius smaller than every edge: scale by D
-    m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale), spread > 1e-9 * m_diameter ? spread : m_diameter);
+    m_alpha_scale = choose_parameter(get_parameter(np, internal_np::agd_scale),
+                                     normalized ? imposed.agd_scale : spread > 1e-9 * m_diameter ? spread : m_diameter);
     if(!(m_alpha_scale > 0) || !std::isfinite(m_alpha_scale) || !std::isfinite(m_alpha_offset))
-      throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: agd_scale must be positive and agd_offset finite");
+      throw Invalid_argument("geodesic spin descriptors: agd_scale must be positive and agd_offset finite");
     // topology: faces with their neighbours; each face listed once, under its corner of smallest
     // index (its owner); the longest edge
     m_links = internal::build_face_links(a);
@@ -192,6 +213,9 @@ public:
   /// The alpha normalization alpha = (agd - alpha_offset()) / alpha_scale() (mesh units).
   double alpha_scale() const { return m_alpha_scale; }
   double alpha_offset() const { return m_alpha_offset; }
+  /// D, the alpha offset and the alpha scale together: give them to the descriptors of another
+  /// shape (`parameters::geodesic_spin_normalization`) to make the two comparable.
+  Geodesic_spin_normalization normalization() const { return {m_diameter, m_alpha_offset, m_alpha_scale}; }
   std::size_t rows() const { return m_rows; }
   std::size_t columns() const { return m_cols; }
   std::size_t number_of_vertices() const { return m_engine.number_of_vertices(); }
@@ -302,7 +326,7 @@ private:
     Spin_contour c(R, m_support, 0.0, 1.0);
     // (checked first: the records must not be left set by a ball rejected half-way)
     for(const auto& p : ball)
-      if(p.first >= n) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin contour: a vertex index of the ball is out of range");
+      if(p.first >= n) throw Invalid_argument("geodesic spin contour: a vertex index of the ball is out of range");
     for(const auto& p : ball) {
       const double t = p.second * inv_h - 0.5;
       st.cws.vx[p.first] = {m_agd[p.first] - m_alpha_offset, t};
@@ -341,7 +365,7 @@ private:
   Spin_image image_from(const Ball& ball) const {
     Spin_image img(m_rows, m_cols, m_support);
     for(const auto& p : ball) {
-      if(p.first >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin image: a vertex index of the ball is out of range");
+      if(p.first >= number_of_vertices()) throw Invalid_argument("geodesic spin image: a vertex index of the ball is out of range");
       if(!(p.second <= m_support)) continue;
       internal::splat_bilinear(img, (m_agd[p.first] - m_alpha_offset) / m_alpha_scale * static_cast<double>(m_cols) - 0.5,
                                p.second / m_support * static_cast<double>(m_rows) - 0.5, m_vertex_area[p.first]);
@@ -352,13 +376,13 @@ private:
   std::vector<Descriptor> for_each_index(const std::vector<std::size_t>& indices, Fn&& fn,
                                          const std::function<void(std::size_t, std::size_t)>& progress) const {
     for(std::size_t i : indices)
-      if(i >= number_of_vertices()) throw Invalid_input(Mesh_defect::invalid_argument, "geodesic spin descriptors: vertex index " + std::to_string(i) + " out of range");
+      if(i >= number_of_vertices()) throw Invalid_argument("geodesic spin descriptors: vertex index " + std::to_string(i) + " out of range");
     std::vector<Descriptor> out(indices.size());
     std::vector<Thread_state> states(m_threads);
     for(auto& st : states) prepare(st);
     std::atomic<std::size_t> done(0);
     std::mutex report;
-    internal::parallel_for(indices.size(), m_threads, [&](std::size_t k, unsigned tid) {
+    parallel_for(indices.size(), m_threads, [&](std::size_t k, unsigned tid) {
       out[k] = fn(indices[k], states[tid]);
       const std::size_t d = ++done;
       if(progress && (d % 64 == 0 || d == indices.size())) {

@@ -116,10 +116,10 @@ inline double directed_contour_sum(const Spin_contour& X, const Spin_contour& Y,
 template <typename XY, typename YX>
 double symmetric_contour_l1(const Spin_contour& X, const Spin_contour& Y, double bound, XY&& xy, YX&& yx) {
   if(X.rows() != Y.rows())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours have " + std::to_string(X.rows()) + " and " +
+    throw Invalid_argument("contour distance: the contours have " + std::to_string(X.rows()) + " and " +
                                                            std::to_string(Y.rows()) + " rows");
   if(X.beta(0) != Y.beta(0) || X.row_spacing() != Y.row_spacing())
-    throw Invalid_input(Mesh_defect::invalid_argument, "contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
+    throw Invalid_argument("contour distance: the contours' rows lie on different lines (a Spin Contour and a Geodesic Spin Contour?)");
   if(X.empty() || Y.empty()) return X.empty() && Y.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   const double total = static_cast<double>(X.size() + Y.size());
   const double limit = bound * total;

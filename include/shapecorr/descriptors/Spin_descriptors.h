@@ -10,11 +10,12 @@
 #include <shapecorr/descriptors/Spin_image.h>
 #include <shapecorr/descriptors/internal/spin_construction.h>
 #include <shapecorr/descriptors/internal/spin_geometry.h>
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 #include <shapecorr/internal/progress.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
 
+#include <Eigen/Core>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -74,13 +75,13 @@ public:
     const double angle = choose_parameter(get_parameter(np, internal_np::support_angle), CGAL_PI);
     m_options.cos_support_angle = angle >= CGAL_PI ? -1.0 : std::cos(angle);
     m_options.samples_per_bin = choose_parameter(get_parameter(np, internal_np::face_samples_per_bin), 2.0);
-    m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
+    m_threads = resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
     if(!(m_options.support > 0) || !std::isfinite(m_options.support))
-      throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptors: support_length must be positive and finite");
+      throw Invalid_argument("spin descriptors: support_length must be positive and finite");
     if(m_options.rows < 2 || m_options.cols < 1)
-      throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptors: need at least 2 image rows and 1 column");
+      throw Invalid_argument("spin descriptors: need at least 2 image rows and 1 column");
     if(!(m_central_radius > 0) || !(m_lrf_radius > 0) || !(angle > 0) || !(m_options.samples_per_bin > 0))
-      throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptors: central_radius, lrf_radius, support_angle and face_samples_per_bin must be positive");
+      throw Invalid_argument("spin descriptors: central_radius, lrf_radius, support_angle and face_samples_per_bin must be positive");
     // Faces in the order of the mesh's iteration (the row order of the flat copy).
     auto fim = CGAL::get_initialized_face_index_map(tm, np);
     m_face_index = [fim](face_descriptor fd) { return static_cast<std::size_t>(get(fim, fd)); };
@@ -88,7 +89,7 @@ public:
     std::size_t f = 0;
     for(face_descriptor fd : faces(tm)) {
       const std::size_t i = m_face_index(fd);
-      if(i >= m_face_row.size()) throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptors: the face index map is not initialized");
+      if(i >= m_face_row.size()) throw Invalid_argument("spin descriptors: the face index map is not initialized");
       m_face_row[i] = f++;
     }
   }
@@ -154,7 +155,7 @@ public:
     std::vector<Descriptor> out(ops.size());
     std::atomic<std::size_t> done(0);
     std::mutex report;
-    internal::parallel_for(ops.size(), m_threads, [&](std::size_t i, unsigned) {
+    parallel_for(ops.size(), m_threads, [&](std::size_t i, unsigned) {
       out[i] = fn(ops[i]);
       const std::size_t d = ++done;
       if(progress && (d % 64 == 0 || d == ops.size())) {
@@ -168,7 +169,7 @@ public:
 private:
   std::size_t face_row(face_descriptor fd) const {
     const std::size_t i = m_face_index(fd);
-    if(i >= m_face_row.size()) throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptors: the face location is not on this mesh");
+    if(i >= m_face_row.size()) throw Invalid_argument("spin descriptors: the face location is not on this mesh");
     return m_face_row[i];
   }
 

@@ -48,7 +48,7 @@ private:
 /// \throws Invalid_input when the sizes differ
 inline std::pair<double, std::size_t> spin_image_correlation(const Spin_image& a, const Spin_image& b) {
   if(a.rows() != b.rows() || a.cols() != b.cols())
-    throw Invalid_input(Mesh_defect::invalid_argument, "spin image comparison: sizes differ (" + std::to_string(a.rows()) + "x" +
+    throw Invalid_argument("spin image comparison: sizes differ (" + std::to_string(a.rows()) + "x" +
                                                            std::to_string(a.cols()) + " vs " + std::to_string(b.rows()) + "x" +
                                                            std::to_string(b.cols()) + ")");
   const float* p = a.values().data();

@@ -1,12 +1,16 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// \file match_descriptors.h
-/// Nearest-descriptor matching with the nearest / second-nearest ratio, for any descriptor type.
+/// Nearest-descriptor matching for any descriptor type: the nearest with the nearest /
+/// second-nearest ratio, the k nearest, and the distances from one descriptor to a set.
 #ifndef SHAPECORR_DESCRIPTORS_MATCH_DESCRIPTORS_H
 #define SHAPECORR_DESCRIPTORS_MATCH_DESCRIPTORS_H
 
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 
+#include <shapecorr/exceptions.h>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -21,6 +25,14 @@ auto bounded_distance(const Distance& d, const A& a, const B& b, double bound, i
 template <typename Distance, typename A, typename B>
 double bounded_distance(const Distance& d, const A& a, const B& b, double, long) {
   return d(a, b);
+}
+
+// Pointers to the elements of a range, for random access by position.
+template <typename Range>
+std::vector<const typename Range::value_type*> element_pointers(const Range& r) {
+  std::vector<const typename Range::value_type*> v;
+  for(const auto& d : r) v.push_back(&d);
+  return v;
 }
 } // namespace internal
 
@@ -48,15 +60,10 @@ struct Descriptor_match {
 template <typename SourceRange, typename TargetRange, typename Distance>
 std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, const TargetRange& targets, const Distance& distance,
                                                 unsigned threads = 0) {
-  const std::vector<const typename SourceRange::value_type*> s = [&] {
-    std::vector<const typename SourceRange::value_type*> v;
-    for(const auto& d : sources) v.push_back(&d);
-    return v;
-  }();
-  std::vector<const typename TargetRange::value_type*> t;
-  for(const auto& d : targets) t.push_back(&d);
+  const auto s = internal::element_pointers(sources);
+  const auto t = internal::element_pointers(targets);
   std::vector<Descriptor_match> out(s.size());
-  internal::parallel_for(s.size(), internal::resolve_thread_count(threads), [&](std::size_t i, unsigned) {
+  parallel_for(s.size(), resolve_thread_count(threads), [&](std::size_t i, unsigned) {
     Descriptor_match m;
     m.source = i;
     for(std::size_t j = 0; j < t.size(); ++j) {
@@ -72,6 +79,71 @@ std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, cons
     out[i] = m;
   });
   return out;
+}
+
+/// \ingroup PkgShapeCorrDescriptors
+/// One of the k nearest target descriptors of a source descriptor.
+struct Descriptor_neighbor {
+  std::size_t target = 0;                                    ///< position in the target range
+  double distance = std::numeric_limits<double>::infinity(); ///< its descriptor distance
+};
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The `k` nearest elements of `targets` for each of `sources`, by `distance(s, t)`: row i lists
+/// them by increasing distance (ties: the lower position first), `min(k, targets.size())` of
+/// them. Candidate lists for correspondence search (several plausible matches per point) rather
+/// than one match. Same distance functors and threads as `match_descriptors`; a functor with a
+/// bounded form is called with the current k-th distance (same result, less work). With `k = 2`,
+/// entries 0 and 1 are `match_descriptors`' nearest and second nearest.
+/// Cost: sources x targets distances, O(log k) bookkeeping each.
+/// \throws Invalid_argument when `k` is 0
+/// \code
+///   auto candidates = shapecorr::k_nearest_descriptors(source_contours, target_contours, shapecorr::Contour_l1_distance(), 5);
+///   for(const shapecorr::Descriptor_neighbor& n : candidates[0]) use(n.target, n.distance);
+/// \endcode
+template <typename SourceRange, typename TargetRange, typename Distance>
+std::vector<std::vector<Descriptor_neighbor>> k_nearest_descriptors(const SourceRange& sources, const TargetRange& targets,
+                                                                    const Distance& distance, std::size_t k, unsigned threads = 0) {
+  if(k == 0) throw Invalid_argument("k_nearest_descriptors: k must be at least 1");
+  const auto s = internal::element_pointers(sources);
+  const auto t = internal::element_pointers(targets);
+  const std::size_t kk = std::min(k, t.size());
+  // (distance, position) pairs: a max-heap of the kk best so far, its top the kk-th
+  auto before = [](const Descriptor_neighbor& a, const Descriptor_neighbor& b) {
+    return a.distance < b.distance || (a.distance == b.distance && a.target < b.target);
+  };
+  std::vector<std::vector<Descriptor_neighbor>> out(s.size());
+  parallel_for(s.size(), resolve_thread_count(threads), [&](std::size_t i, unsigned) {
+    std::vector<Descriptor_neighbor> heap;
+    heap.reserve(kk + 1);
+    for(std::size_t j = 0; j < t.size(); ++j) {
+      const double bound = heap.size() < kk ? std::numeric_limits<double>::infinity() : heap.front().distance;
+      const Descriptor_neighbor c{j, internal::bounded_distance(distance, *s[i], *t[j], bound, 0)};
+      if(heap.size() < kk) {
+        heap.push_back(c);
+        std::push_heap(heap.begin(), heap.end(), before);
+      } else if(before(c, heap.front())) {
+        std::pop_heap(heap.begin(), heap.end(), before);
+        heap.back() = c;
+        std::push_heap(heap.begin(), heap.end(), before);
+      }
+    }
+    std::sort_heap(heap.begin(), heap.end(), before);
+    out[i] = std::move(heap);
+  });
+  return out;
+}
+
+/// \ingroup PkgShapeCorrDescriptors
+/// The distance from `query` to every element of `targets` (in their order), in parallel: a
+/// descriptor's distance map over a shape, for pictures of where a point's descriptor matches.
+template <typename Descriptor, typename TargetRange, typename Distance>
+std::vector<double> descriptor_distances(const Descriptor& query, const TargetRange& targets, const Distance& distance,
+                                         unsigned threads = 0) {
+  const auto t = internal::element_pointers(targets);
+  std::vector<double> d(t.size());
+  parallel_for(t.size(), resolve_thread_count(threads), [&](std::size_t j, unsigned) { d[j] = distance(query, *t[j]); });
+  return d;
 }
 
 } // namespace shapecorr

@@ -8,7 +8,7 @@
 #define SHAPECORR_EVALUATION_DESCRIPTOR_RANKING_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 
 #include <Eigen/Core>
 
@@ -50,13 +50,13 @@ Ranking_curves evaluate_ranking(std::size_t sources, std::size_t targets, Distan
                                 GeodesicFn&& geodesics_from, const std::vector<std::size_t>& symmetric_truth,
                                 SymmetricGeodesicFn&& symmetric_geodesics_from, double normalization, unsigned threads) {
   if(sources == 0 || targets == 0 || truth.size() != sources)
-    throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: need source points, target vertices and one true match per source point");
+    throw Invalid_argument("descriptor ranking: need source points, target vertices and one true match per source point");
   if(!symmetric_truth.empty() && symmetric_truth.size() != sources)
-    throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: one symmetric match per source point");
-  if(!(normalization > 0)) throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: the normalization must be positive");
+    throw Invalid_argument("descriptor ranking: one symmetric match per source point");
+  if(!(normalization > 0)) throw Invalid_argument("descriptor ranking: the normalization must be positive");
   for(const auto* t : {&truth, &symmetric_truth})
     for(std::size_t v : *t)
-      if(v >= targets) throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: a true match is not a target vertex");
+      if(v >= targets) throw Invalid_argument("descriptor ranking: a true match is not a target vertex");
   const bool sym = !symmetric_truth.empty();
   Ranking_curves out;
   out.number_of_sources = sources;
@@ -71,12 +71,12 @@ Ranking_curves evaluate_ranking(std::size_t sources, std::size_t targets, Distan
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d[a] < d[b]; });
     const Eigen::VectorXd g = geodesics_from(i);
     if(static_cast<std::size_t>(g.size()) != targets)
-      throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: the geodesic distances do not cover the target");
+      throw Invalid_argument("descriptor ranking: the geodesic distances do not cover the target");
     Eigen::VectorXd gs;
     if(sym) {
       gs = symmetric_geodesics_from(i);
       if(static_cast<std::size_t>(gs.size()) != targets)
-        throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: the geodesic distances do not cover the target");
+        throw Invalid_argument("descriptor ranking: the geodesic distances do not cover the target");
     }
     std::size_t rank = targets, rank_s = targets;
     std::vector<double> e(targets), es(sym ? targets : 0);
@@ -142,7 +142,7 @@ Ranking_curves evaluate_descriptor_ranking(std::size_t sources, std::size_t targ
                                            GeodesicFn&& geodesics_from, const std::vector<std::size_t>& symmetric_truth,
                                            SymmetricGeodesicFn&& symmetric_geodesics_from, double normalization, unsigned threads = 0) {
   if(symmetric_truth.size() != sources)
-    throw Invalid_input(Mesh_defect::invalid_argument, "descriptor ranking: one symmetric match per source point");
+    throw Invalid_argument("descriptor ranking: one symmetric match per source point");
   return internal::evaluate_ranking(sources, targets, distance, truth, geodesics_from, symmetric_truth, symmetric_geodesics_from,
                                     normalization, threads);
 }
@@ -156,7 +156,7 @@ inline std::vector<std::size_t> read_vts(const std::string& path) {
   std::vector<std::size_t> ids;
   long long v;
   while(in >> v) {
-    if(v < 1) throw Invalid_input(Mesh_defect::invalid_argument, path + ": vertex id " + std::to_string(v) + " (the file is 1-based)");
+    if(v < 1) throw Invalid_input(Mesh_defect::unreadable_file, path + ": vertex id " + std::to_string(v) + " (the file is 1-based)");
     ids.push_back(static_cast<std::size_t>(v - 1));
   }
   if(!in.eof()) throw Invalid_input(Mesh_defect::unreadable_file, path + ": not a list of integers");

@@ -4,10 +4,10 @@
 #ifndef SHAPECORR_GEODESICS_EXACT_GEODESICS_H
 #define SHAPECORR_GEODESICS_EXACT_GEODESICS_H
 
-#include <shapecorr/internal/parallel.h>
-#include <shapecorr/mesh/internal/components.h>
+#include <shapecorr/parallel.h>
+#include <shapecorr/internal/components.h>
 #include <shapecorr/geodesics/internal/engine_helpers.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -59,7 +59,7 @@ public:
                                          get_const_property_map(CGAL::vertex_point, tm))) {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
+    m_threads = resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
     m_components = internal::vertex_components(m_mesh.number_of_vertices(), m_mesh.arrays().F, m_component);
   }
 
@@ -71,7 +71,7 @@ public:
   unsigned number_of_threads() const { return m_threads; }
 
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
-    if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "exact geodesics: no source vertex given");
+    if(sources.empty()) throw Invalid_argument("exact geodesics: no source vertex given");
     Shortest_path sp(m_tm, m_vim, m_him, m_fim, m_vpm);
     std::vector<char> has_source(m_components, 0);
     for(std::size_t s : sources) {
@@ -106,7 +106,7 @@ public:
 private:
   void check_source(std::size_t s) const {
     if(s >= number_of_vertices())
-      throw Invalid_input(Mesh_defect::invalid_argument, "source vertex " + std::to_string(s) + " out of range (mesh has " +
+      throw Invalid_argument("source vertex " + std::to_string(s) + " out of range (mesh has " +
                                                              std::to_string(number_of_vertices()) + " vertices)");
   }
   const TriangleMesh& m_tm;

@@ -5,9 +5,9 @@
 #define SHAPECORR_GEODESICS_FAST_MARCHING_GEODESICS_H
 
 #include <shapecorr/geodesics/internal/fast_marching_engine.h>
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 #include <shapecorr/geodesics/internal/engine_helpers.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
 
 #include <Eigen/Dense>
@@ -46,7 +46,7 @@ public:
     : m_mesh(tm, np), m_engine(m_mesh.arrays()) {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    m_threads = internal::resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
+    m_threads = resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
   }
 
   std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
@@ -71,7 +71,7 @@ public:
   typedef internal::Fast_marching_engine::Workspace Workspace;
   void distances_within(std::size_t source, double radius, Ball& out, Workspace& ws) const {
     if(!(radius >= 0))
-      throw Invalid_input(Mesh_defect::invalid_argument, "radius-limited geodesics: the radius must be >= 0");
+      throw Invalid_argument("radius-limited geodesics: the radius must be >= 0");
     out.clear();
     m_engine.march({source}, radius, ws, [&](std::size_t v, double d) { out.emplace_back(v, d); });
   }
@@ -86,7 +86,7 @@ public:
   }
 
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
-    if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "fast marching: no source vertex given");
+    if(sources.empty()) throw Invalid_argument("fast marching: no source vertex given");
     Workspace ws;
     return full(sources, ws);
   }

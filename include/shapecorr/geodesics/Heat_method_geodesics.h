@@ -6,8 +6,10 @@
 
 #include <shapecorr/geodesics/internal/heat_method_engine.h>
 #include <shapecorr/geodesics/internal/engine_helpers.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
+
+#include <Eigen/Core>
 
 #include <functional>
 #include <memory>
@@ -59,7 +61,7 @@ public:
     opt.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u);
     opt.batch_size = choose_parameter(get_parameter(np, internal_np::batch_size), std::size_t(8));
     if(!(opt.time_step_factor > 0))
-      throw Invalid_input(Mesh_defect::invalid_argument, "heat method: time_step_factor must be positive");
+      throw Invalid_argument("heat method: time_step_factor must be positive");
     m_engine = std::make_unique<internal::Heat_method_engine<SparseSolver>>(m_mesh.arrays(), opt);
   }
 

@@ -5,7 +5,7 @@
 #define SHAPECORR_GEODESICS_ALL_PAIRS_GEODESIC_DISTANCES_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
 
 #include <Eigen/Dense>
 
@@ -158,7 +158,7 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 Geodesic_distance_matrix compute_all_pairs_geodesic_distances(const TriangleMesh& tm,
                                                               const NamedParameters& np = CGAL::parameters::default_values()) {
   const auto progress = internal::progress_of(np);
-  return internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+  return with_geodesic_engine(tm, np, [&](const auto& engine) {
     return internal::all_pairs_from_engine(engine, progress);
   }, Geodesic_method::FAST_MARCHING);
 }

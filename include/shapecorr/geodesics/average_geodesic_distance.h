@@ -6,9 +6,11 @@
 #define SHAPECORR_GEODESICS_AVERAGE_GEODESIC_DISTANCE_H
 
 #include <shapecorr/geodesics/Fast_marching_geodesics.h>
-#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
-#include <shapecorr/internal/parallel.h>
-#include <shapecorr/sampling/furthest_point_sampling.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
+#include <shapecorr/internal/furthest_point_order.h>
+#include <shapecorr/parallel.h>
+
+#include <Eigen/Core>
 
 #include <cmath>
 #include <functional>
@@ -119,7 +121,7 @@ void compute_average_geodesic_distance(const TriangleMesh& tm, VertexAgdMap agd_
   std::size_t k = choose_parameter(get_parameter(np, internal_np::number_of_sources), std::size_t(100));
   const unsigned seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   const auto progress = internal::progress_of(np);
-  internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+  with_geodesic_engine(tm, np, [&](const auto& engine) {
     const std::size_t n = engine.number_of_vertices();
     // distances from each source to every vertex, row s = from sources[s] (float: k x n x 4 bytes)
     Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> D;
@@ -163,7 +165,7 @@ template <typename TriangleMesh, typename VertexAgdMap, typename NamedParameters
 void compute_local_average_geodesic_distance(const TriangleMesh& tm, double radius, VertexAgdMap agd_map,
                                              const NamedParameters& np = CGAL::parameters::default_values()) {
   if(!(radius > 0))
-    throw Invalid_input(Mesh_defect::invalid_argument, "local average geodesic distance: the radius must be positive");
+    throw Invalid_argument("local average geodesic distance: the radius must be positive");
   Fast_marching_geodesics<TriangleMesh> engine(tm, np);
   const std::vector<double> agd = internal::local_average_geodesic_distances(engine, radius, internal::progress_of(np));
   const std::size_t n = engine.number_of_vertices();

@@ -4,7 +4,7 @@
 #ifndef SHAPECORR_GEODESICS_COMPUTE_GEODESIC_DISTANCES_H
 #define SHAPECORR_GEODESICS_COMPUTE_GEODESIC_DISTANCES_H
 
-#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
 
 #include <type_traits>
 #include <vector>
@@ -32,7 +32,7 @@ void compute_geodesic_distances(const TriangleMesh& tm, const VertexRange& sourc
     const std::vector<vertex_descriptor> one{sources};
     compute_geodesic_distances(tm, one, distance_map, np);
   } else {
-    internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+    with_geodesic_engine(tm, np, [&](const auto& engine) {
       engine.estimate_geodesic_distances(sources, distance_map);
       return 0;
     });

@@ -4,7 +4,9 @@
 #ifndef SHAPECORR_GEODESICS_GEODESIC_DIAMETER_H
 #define SHAPECORR_GEODESICS_GEODESIC_DIAMETER_H
 
-#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
+
+#include <Eigen/Core>
 
 #include <cmath>
 #include <vector>
@@ -62,7 +64,7 @@ double geodesic_diameter(const TriangleMesh& tm, const NamedParameters& np = CGA
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const int sweeps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 6);
-  return internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+  return with_geodesic_engine(tm, np, [&](const auto& engine) {
     return internal::diameter_by_sweeps(engine, internal::canonical_start_vertex(engine.arrays()), sweeps);
   });
 }

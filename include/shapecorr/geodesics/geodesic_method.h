@@ -23,7 +23,7 @@ inline Geodesic_method geodesic_method_from_string(const std::string& s) {
   if(s == "heat") return Geodesic_method::HEAT;
   if(s == "exact") return Geodesic_method::EXACT;
   if(s == "fmm" || s == "fast-marching") return Geodesic_method::FAST_MARCHING;
-  throw Invalid_input(Mesh_defect::invalid_argument, "unknown geodesic method '" + s + "' (expected heat, exact or fmm)");
+  throw Invalid_argument("unknown geodesic method '" + s + "' (expected heat, exact or fmm)");
 }
 
 } // namespace shapecorr

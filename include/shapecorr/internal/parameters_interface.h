@@ -46,3 +46,4 @@ SHAPECORR_add_named_parameter(agd_radius_fraction_t, agd_radius_fraction, agd_ra
 SHAPECORR_add_named_parameter(geodesic_diameter_t, geodesic_diameter, geodesic_diameter)
 SHAPECORR_add_named_parameter(agd_scale_t, agd_scale, agd_scale)
 SHAPECORR_add_named_parameter(agd_offset_t, agd_offset, agd_offset)
+SHAPECORR_add_named_parameter(geodesic_spin_normalization_t, geodesic_spin_normalization, geodesic_spin_normalization)

@@ -5,7 +5,9 @@
 #define SHAPECORR_IO_WRITE_COLORED_PLY_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <array>
@@ -35,7 +37,7 @@ inline std::array<unsigned char, 3> colormap_viridis(double t) {
 /// order of the vertex index map of `np`; linearly scaled from their finite min to max, viridis)
 /// and carry the raw value as a `quality` property (MeshLab shows it). The vertices listed in
 /// `highlight` (indices) are painted red, e.g. furthest-point samples or sources.
-/// \throws Invalid_input (`unreadable_file`) when the file cannot be written
+/// \throws Output_error when the file cannot be written
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 void write_colored_ply(const std::string& path, const TriangleMesh& tm, const std::vector<double>& values,
                        const std::vector<std::size_t>& highlight = {},
@@ -44,7 +46,7 @@ void write_colored_ply(const std::string& path, const TriangleMesh& tm, const st
   const auto& a = im.arrays();
   const std::size_t n = a.number_of_vertices();
   if(values.size() != n)
-    throw Invalid_input(Mesh_defect::invalid_argument, "write_colored_ply: " + std::to_string(values.size()) +
+    throw Invalid_argument("write_colored_ply: " + std::to_string(values.size()) +
                                                            " values for " + std::to_string(n) + " vertices");
   double lo = INFINITY, hi = -INFINITY;
   for(double v : values) if(std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
@@ -52,7 +54,7 @@ void write_colored_ply(const std::string& path, const TriangleMesh& tm, const st
   std::vector<char> red(n, 0);
   for(std::size_t h : highlight) if(h < n) red[h] = 1;
   std::ofstream out(path);
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot open for writing");
+  if(!out) throw Output_error(path + ": cannot open for writing");
   out << "ply\nformat ascii 1.0\ncomment written by ShapeCorr; quality = value per vertex\nelement vertex " << n
       << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
          "property float quality\nelement face "
@@ -64,7 +66,7 @@ void write_colored_ply(const std::string& path, const TriangleMesh& tm, const st
         << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]) << ' ' << (std::isfinite(values[i]) ? values[i] : -1.0) << '\n';
   }
   for(Eigen::Index f = 0; f < a.F.rows(); ++f) out << "3 " << a.F(f, 0) << ' ' << a.F(f, 1) << ' ' << a.F(f, 2) << '\n';
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, path + ": write failed");
+  if(!out) throw Output_error(path + ": write failed");
 }
 
 } // namespace shapecorr

@@ -7,8 +7,10 @@
 #define SHAPECORR_IO_WRITE_CORRESPONDENCES_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 #include <shapecorr/parameters.h>
+
+#include <Eigen/Core>
 
 #include <fstream>
 #include <string>
@@ -35,14 +37,14 @@ void write_correspondences(const std::string& path, const SourceMesh& source, co
   const std::size_t ns = A.number_of_vertices(), nt = B.number_of_vertices();
   for(const auto& p : pairs)
     if(p.first >= ns || p.second >= nt)
-      throw Invalid_input(Mesh_defect::invalid_argument, "write_correspondences: pair (" + std::to_string(p.first) + ", " +
+      throw Invalid_argument("write_correspondences: pair (" + std::to_string(p.first) + ", " +
                                                              std::to_string(p.second) + ") out of range");
   if(!correct.empty() && correct.size() != pairs.size())
-    throw Invalid_input(Mesh_defect::invalid_argument, "write_correspondences: one correctness flag per pair expected");
+    throw Invalid_argument("write_correspondences: one correctness flag per pair expected");
   const double shift = (A.V.col(0).maxCoeff() - B.V.col(0).minCoeff()) + 0.2 * (A.V.col(0).maxCoeff() - A.V.col(0).minCoeff());
   const std::string ext = path.size() > 4 ? path.substr(path.size() - 4) : "";
   std::ofstream out(path);
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "write_correspondences: cannot write '" + path + "'");
+  if(!out) throw Output_error("write_correspondences: cannot write '" + path + "'");
   out.precision(9);
   auto vertex = [&](std::size_t i) {
     if(i < ns) out << A.V(static_cast<Eigen::Index>(i), 0) << ' ' << A.V(static_cast<Eigen::Index>(i), 1) << ' ' << A.V(static_cast<Eigen::Index>(i), 2);
@@ -78,9 +80,9 @@ void write_correspondences(const std::string& path, const SourceMesh& source, co
     for(std::size_t k = 0; k < pairs.size(); ++k)
       out << pairs[k].first << ' ' << pairs[k].second + ns << (correct.empty() || correct[k] ? " 0 0 0\n" : " 230 20 20\n");
   } else {
-    throw Invalid_input(Mesh_defect::invalid_argument, "write_correspondences: the file must end in .obj or .ply: " + path);
+    throw Invalid_argument("write_correspondences: the file must end in .obj or .ply: " + path);
   }
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "write_correspondences: writing '" + path + "' failed");
+  if(!out) throw Output_error("write_correspondences: writing '" + path + "' failed");
 }
 
 } // namespace shapecorr

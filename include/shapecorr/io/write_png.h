@@ -156,12 +156,12 @@ inline void deflate_fixed(const std::vector<std::uint8_t>& in, std::vector<std::
 
 /// \ingroup PkgShapeCorrIO
 /// Writes `pic` as a PNG file (deflate with fixed Huffman codes; no external library).
-/// \throws Invalid_input (`unreadable_file`) when the file cannot be written or the picture is empty
+/// \throws Output_error when the file cannot be written; Invalid_argument when the picture is empty
 inline void write_png(const std::string& path, const Rgb_picture& pic) {
   if(pic.width == 0 || pic.height == 0 || pic.rgb.size() != 3 * pic.width * pic.height)
-    throw Invalid_input(Mesh_defect::invalid_argument, "write_png: empty or inconsistent picture");
+    throw Invalid_argument("write_png: empty or inconsistent picture");
   std::ofstream out(path, std::ios::binary);
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "write_png: cannot write '" + path + "'");
+  if(!out) throw Output_error("write_png: cannot write '" + path + "'");
   static const std::uint8_t signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
   out.write(reinterpret_cast<const char*>(signature), 8);
   std::vector<std::uint8_t> ihdr;
@@ -186,7 +186,7 @@ inline void write_png(const std::string& path, const Rgb_picture& pic) {
   internal::put_u32(z, (b << 16) | a);
   internal::png_chunk(out, "IDAT", z);
   internal::png_chunk(out, "IEND", {});
-  if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "write_png: writing '" + path + "' failed");
+  if(!out) throw Output_error("write_png: writing '" + path + "' failed");
 }
 
 } // namespace shapecorr

@@ -37,7 +37,7 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& P, const std::vector
 /// pole of the icosahedron; vertex ids of the icosahedron (0..11) come first.
 template <typename TriangleMesh>
 void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
-  if(subdivisions < 0 || subdivisions > 8) throw Invalid_input(Mesh_defect::invalid_argument, "make_icosphere: subdivisions in [0, 8]");
+  if(subdivisions < 0 || subdivisions > 8) throw Invalid_argument("make_icosphere: subdivisions in [0, 8]");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<std::array<double, 3>> P = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
                                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
@@ -80,7 +80,7 @@ void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
 /// two triangles along alternating diagonals. Vertex (i, j) has index j * (nx + 1) + i.
 template <typename TriangleMesh>
 void make_grid(TriangleMesh& tm, int nx, int ny, double sx = 1.0, double sy = 1.0) {
-  if(nx < 1 || ny < 1) throw Invalid_input(Mesh_defect::invalid_argument, "make_grid: at least one cell per direction");
+  if(nx < 1 || ny < 1) throw Invalid_argument("make_grid: at least one cell per direction");
   std::vector<std::array<double, 3>> P;
   std::vector<std::array<std::size_t, 3>> T;
   for(int j = 0; j <= ny; ++j)
@@ -103,7 +103,7 @@ void make_grid(TriangleMesh& tm, int nx, int ny, double sx = 1.0, double sy = 1.
 /// Torus of radii R (centre circle) and r (tube), nu x nv quads split into triangles, around z.
 template <typename TriangleMesh>
 void make_torus(TriangleMesh& tm, double R, double r, int nu, int nv) {
-  if(nu < 3 || nv < 3 || !(R > r) || !(r > 0)) throw Invalid_input(Mesh_defect::invalid_argument, "make_torus: nu, nv >= 3 and R > r > 0");
+  if(nu < 3 || nv < 3 || !(R > r) || !(r > 0)) throw Invalid_argument("make_torus: nu, nv >= 3 and R > r > 0");
   std::vector<std::array<double, 3>> P;
   std::vector<std::array<std::size_t, 3>> T;
   const double pi = 3.14159265358979323846;

@@ -4,9 +4,11 @@
 #ifndef SHAPECORR_SAMPLING_FURTHEST_POINT_SAMPLING_H
 #define SHAPECORR_SAMPLING_FURTHEST_POINT_SAMPLING_H
 
-#include <shapecorr/geodesics/internal/with_geodesic_engine.h>
+#include <shapecorr/geodesics/with_geodesic_engine.h>
+#include <shapecorr/internal/furthest_point_order.h>
+#include <shapecorr/internal/indexed_mesh.h>
 
-#include <CGAL/Random.h>
+#include <Eigen/Core>
 
 #include <cmath>
 #include <limits>
@@ -19,42 +21,30 @@ namespace shapecorr {
 /// Distance used by furthest point sampling (named parameter `distance_metric`).
 enum class Distance_metric { GEODESIC, EUCLIDEAN };
 
-namespace internal {
-
-/// The start vertex the seed draws (shared by every seeded use of furthest point sampling).
-inline std::size_t seeded_start_vertex(unsigned seed, std::size_t n) {
-  CGAL::Random rng(seed);
-  return static_cast<std::size_t>(rng.get_int(0, static_cast<int>(n)));
-}
-
-/// Sample indices in selection order; `distances_from(i)` gives the distance of every vertex to
-/// vertex i (n values).
+/// \ingroup PkgShapeCorrSampling
+/// Furthest point sampling over any distance, by index: the order of `furthest_point_sampling`
+/// for distances that the caller provides (precomputed matrices, a subset of vertices, another
+/// metric). Starts at `first`, then repeatedly takes the index farthest from those taken (ties to
+/// the lowest index), `count + 1` in all, and drops `first` unless `keep_first`.
+/// \tparam DistancesFrom callable `(std::size_t i) -> Eigen::VectorXd` giving the n distances from
+///   index i; `+infinity` counts as farthest (an unreached component), and a **negative distance
+///   excludes** an index from ever being chosen
+/// \param n number of indices, \param count number of samples wanted
+/// \returns the sample indices in selection order (fewer than `count` when fewer indices qualify)
+/// \code
+///   // 10 samples among the vertices with ground truth, by fast marching
+///   auto samples = shapecorr::furthest_point_sampling_indices(n, 10, first, [&](std::size_t s) {
+///     Eigen::VectorXd d = engine.distances_from(s);
+///     for(std::size_t v = 0; v < n; ++v) if(!has_truth[v]) d[v] = -1;
+///     return d;
+///   });
+/// \endcode
 template <typename DistancesFrom>
-std::vector<std::size_t> furthest_point_sampling_indices(std::size_t n, std::size_t count, std::size_t first, bool keep_first,
-                                           DistancesFrom&& distances_from) {
-  std::vector<double> mind(n, std::numeric_limits<double>::infinity());
-  const std::size_t total = keep_first ? count : count + 1; // the thesis drops the arbitrary start
-  std::size_t next = first;
-  std::vector<std::size_t> chosen;
-  std::vector<char> taken(n, 0);
-  while(chosen.size() < std::min(total, n)) {
-    chosen.push_back(next);
-    taken[next] = 1;
-    const Eigen::VectorXd d = distances_from(next);
-    for(std::size_t i = 0; i < n; ++i) mind[i] = std::min(mind[i], d[static_cast<Eigen::Index>(i)]);
-    // farthest untaken vertex; +infinity (another component) wins, ties to the lowest index
-    double best = -1;
-    std::size_t arg = n;
-    for(std::size_t i = 0; i < n; ++i)
-      if(!taken[i] && mind[i] > best) { best = mind[i]; arg = i; }
-    if(arg == n) break;
-    next = arg;
-  }
-  if(!keep_first && chosen.size() > count) chosen.erase(chosen.begin());
-  return chosen;
+std::vector<std::size_t> furthest_point_sampling_indices(std::size_t n, std::size_t count, std::size_t first,
+                                                         DistancesFrom&& distances_from, bool keep_first = false) {
+  if(first >= n) throw Invalid_argument("furthest point sampling: first index " + std::to_string(first) + " out of range (" + std::to_string(n) + " indices)");
+  return internal::furthest_point_sampling_indices(n, count, first, keep_first, distances_from);
 }
-
-} // namespace internal
 
 /// \ingroup PkgShapeCorrSampling
 /// Furthest point sampling (thesis, chapter 5): start at an arbitrary vertex (drawn with the seed,
@@ -102,7 +92,7 @@ OutputIterator furthest_point_sampling(const TriangleMesh& tm, std::size_t count
     const auto& V = im.arrays().V;
     run(im, [&](std::size_t s) -> Eigen::VectorXd { return (V.rowwise() - V.row(static_cast<Eigen::Index>(s))).rowwise().norm(); });
   } else {
-    internal::with_geodesic_engine(tm, np, [&](const auto& engine) {
+    with_geodesic_engine(tm, np, [&](const auto& engine) {
       return run(engine, [&](std::size_t s) { return engine.distances_from(s); });
     });
   }

@@ -7,7 +7,7 @@
 #include <shapecorr/exceptions.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/spectral/Spectra_eigensolver.h>
-#include <shapecorr/spectral/laplacian.h>
+#include <shapecorr/operators/laplacian.h>
 
 #include <Eigen/Dense>
 
@@ -39,7 +39,7 @@ public:
     : m_values(std::move(values)), m_vectors(std::move(vectors)), m_mass(std::move(mass)), m_scale(operator_scale) {
     if(!(m_scale > 0)) m_scale = m_values.size() ? std::abs(m_values[m_values.size() - 1]) : 0.0;
     if(m_vectors.rows() != m_mass.size() || m_vectors.cols() != m_values.size())
-      throw Invalid_input(Mesh_defect::invalid_argument, "eigenbasis: sizes of eigenvalues, eigenvectors and mass disagree");
+      throw Invalid_argument("eigenbasis: sizes of eigenvalues, eigenvectors and mass disagree");
   }
 
   /// Number of vertices n.
@@ -65,10 +65,10 @@ public:
   }
 
   /// Writes the basis to a binary file (native-endian; header "SCLBEIG1", n, k, operator scale, eigenvalues, mass, eigenvectors column-major).
-  /// \throws Invalid_input (`unreadable_file`) when the file cannot be written
+  /// \throws Output_error when the file cannot be written
   void save(const std::string& path) const {
     std::ofstream out(path, std::ios::binary);
-    if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: cannot write '" + path + "'");
+    if(!out) throw Output_error("eigenbasis: cannot write '" + path + "'");
     const std::uint64_t n = number_of_vertices(), k = number_of_eigenpairs();
     out.write(magic(), 8);
     out.write(reinterpret_cast<const char*>(&n), sizeof n);
@@ -77,7 +77,7 @@ public:
     out.write(reinterpret_cast<const char*>(m_values.data()), static_cast<std::streamsize>(sizeof(double) * k));
     out.write(reinterpret_cast<const char*>(m_mass.data()), static_cast<std::streamsize>(sizeof(double) * n));
     out.write(reinterpret_cast<const char*>(m_vectors.data()), static_cast<std::streamsize>(sizeof(double) * n * k));
-    if(!out) throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: writing '" + path + "' failed");
+    if(!out) throw Output_error("eigenbasis: writing '" + path + "' failed");
   }
 
   /// Reads a basis written by `save`.
@@ -140,7 +140,7 @@ Laplace_beltrami_eigenbasis compute_laplace_beltrami_eigenbasis(const TriangleMe
                                                                 const NamedParameters& np = CGAL::parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const internal::Laplace_operators op = internal::laplace_operators(tm, np);
+  const Laplace_operators op = laplace_operators(tm, np);
   const auto solver = choose_parameter(get_parameter(np, internal_np::eigensolver), Spectra_eigensolver<>());
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors;

@@ -62,7 +62,7 @@ struct Spectra_eigensolver {
              Eigen::VectorXd& values, Eigen::MatrixXd& vectors) const {
     const Eigen::Index n = L.rows();
     if(k == 0 || static_cast<Eigen::Index>(k) > n)
-      throw Invalid_input(Mesh_defect::invalid_argument, "eigensolver: " + std::to_string(k) + " eigenpairs asked of a " +
+      throw Invalid_argument("eigensolver: " + std::to_string(k) + " eigenpairs asked of a " +
                                                             std::to_string(n) + "-vertex mesh (1 <= k <= n)");
     if(!(mass.array() > 0).all() || !mass.allFinite())
       throw Invalid_input(Mesh_defect::isolated_vertex,

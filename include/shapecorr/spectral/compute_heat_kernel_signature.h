@@ -6,6 +6,7 @@
 
 #include <shapecorr/spectral/internal/spectral_signatures.h>
 
+#include <Eigen/Core>
 namespace shapecorr {
 
 /// \ingroup PkgShapeCorrSpectral
@@ -25,7 +26,7 @@ std::vector<double> heat_kernel_signature_times(const Laplace_beltrami_eigenbasi
                                        c / basis.eigenvalues()[static_cast<Eigen::Index>(z)]);
   const auto range = choose_parameter(get_parameter(np, internal_np::time_range), dflt);
   if(!(range.first > 0) || !(range.second >= range.first))
-    throw Invalid_input(Mesh_defect::invalid_argument, "heat kernel signature: time_range must satisfy 0 < first <= second");
+    throw Invalid_argument("heat kernel signature: time_range must satisfy 0 < first <= second");
   return internal::log_uniform(range.first, range.second, count);
 }
 

@@ -6,6 +6,7 @@
 
 #include <shapecorr/spectral/internal/spectral_signatures.h>
 
+#include <Eigen/Core>
 namespace shapecorr {
 
 namespace internal {

@@ -6,6 +6,7 @@
 
 #include <shapecorr/spectral/internal/spectral_signatures.h>
 
+#include <Eigen/Core>
 namespace shapecorr {
 
 /// \ingroup PkgShapeCorrSpectral
@@ -23,7 +24,7 @@ std::vector<double> wave_kernel_signature_energies(const Laplace_beltrami_eigenb
                                        std::log(basis.eigenvalues()[basis.eigenvalues().size() - 1]));
   const auto range = choose_parameter(get_parameter(np, internal_np::energy_range), dflt);
   if(!(range.second >= range.first) || !std::isfinite(range.first) || !std::isfinite(range.second))
-    throw Invalid_input(Mesh_defect::invalid_argument, "wave kernel signature: energy_range must be finite with first <= second");
+    throw Invalid_argument("wave kernel signature: energy_range must be finite with first <= second");
   std::vector<double> e(count);
   for(std::size_t j = 0; j < count; ++j)
     e[j] = count == 1 ? range.first : range.first + (range.second - range.first) * static_cast<double>(j) / static_cast<double>(count - 1);

@@ -27,7 +27,7 @@ double spectral_descriptor_distance(const Range1& a, const Range2& b) {
     s += d * d;
   }
   if(ia != std::end(a) || ib != std::end(b))
-    throw Invalid_input(Mesh_defect::invalid_argument, "spectral descriptor distance: descriptors of different lengths");
+    throw Invalid_argument("spectral descriptor distance: descriptors of different lengths");
   return std::sqrt(s);
 }
 

@@ -10,8 +10,9 @@
 #define SHAPECORR_DESCRIPTORS_INTERNAL_CONTOUR_CONSTRUCTION_H
 
 #include <shapecorr/descriptors/Spin_contour.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 
+#include <Eigen/Core>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif

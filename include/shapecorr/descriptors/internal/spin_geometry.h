@@ -9,7 +9,7 @@
 #include <shapecorr/descriptors/internal/contour_construction.h>
 #include <shapecorr/exceptions.h>
 #include <shapecorr/internal/kd_tree.h>
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
 
 #include <Eigen/Dense>
 

@@ -4,7 +4,7 @@
 #ifndef SHAPECORR_GEODESICS_INTERNAL_ENGINE_HELPERS_H
 #define SHAPECORR_GEODESICS_INTERNAL_ENGINE_HELPERS_H
 
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 
 #include <Eigen/Dense>
 

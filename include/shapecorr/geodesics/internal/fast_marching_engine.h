@@ -9,7 +9,9 @@
 #define SHAPECORR_GEODESICS_INTERNAL_FAST_MARCHING_ENGINE_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/mesh/internal/intrinsic_triangulation.h>
+#include <shapecorr/internal/intrinsic_triangulation.h>
+
+#include <Eigen/Core>
 
 #include <cmath>
 #include <cstdint>
@@ -120,7 +122,7 @@ public:
     w.heap.clear();
     for(std::size_t s : sources) {
       if(s >= m_n)
-        throw Invalid_input(Mesh_defect::invalid_argument, "source vertex " + std::to_string(s) + " out of range (mesh has " +
+        throw Invalid_argument("source vertex " + std::to_string(s) + " out of range (mesh has " +
                                                                std::to_string(m_n) + " vertices)");
       if(state[s].slot == far) {
         w.touched.push_back(static_cast<int>(s));

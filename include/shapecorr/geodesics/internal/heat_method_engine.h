@@ -7,11 +7,11 @@
 #define SHAPECORR_GEODESICS_INTERNAL_HEAT_METHOD_ENGINE_H
 
 #include <shapecorr/exceptions.h>
-#include <shapecorr/internal/parallel.h>
+#include <shapecorr/parallel.h>
 #include <shapecorr/internal/sparse_solver.h>
-#include <shapecorr/mesh/internal/components.h>
-#include <shapecorr/mesh/internal/intrinsic_triangulation.h>
-#include <shapecorr/spectral/internal/cotangent_operators.h>
+#include <shapecorr/internal/components.h>
+#include <shapecorr/internal/intrinsic_triangulation.h>
+#include <shapecorr/internal/cotangent_operators.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -119,7 +119,7 @@ public:
 
   /// Distance to the nearest of `sources` (multi-source), one vector of n values.
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
-    if(sources.empty()) throw Invalid_input(Mesh_defect::invalid_argument, "heat method: no source vertex given");
+    if(sources.empty()) throw Invalid_argument("heat method: no source vertex given");
     for(std::size_t s : sources) check_source(s);
     Matrix rhs = Matrix::Zero(static_cast<Eigen::Index>(m_n), 1);
     for(std::size_t s : sources) rhs(static_cast<Eigen::Index>(s), 0) = 1.0;
@@ -134,8 +134,7 @@ public:
 private:
   void check_source(std::size_t s) const {
     if(s >= m_n)
-      throw Invalid_input(Mesh_defect::invalid_argument,
-                          "source vertex " + std::to_string(s) + " out of range (mesh has " + std::to_string(m_n) + " vertices)");
+      throw Invalid_argument("source vertex " + std::to_string(s) + " out of range (mesh has " + std::to_string(m_n) + " vertices)");
   }
 
   SparseSolver& solver(std::unique_ptr<SparseSolver>& slot, const Eigen::SparseMatrix<double>& A, const char* what) const {

@@ -28,7 +28,7 @@ namespace internal {
 inline std::size_t first_nonzero_eigenvalue(const Laplace_beltrami_eigenbasis& b, const char* what) {
   const std::size_t z = b.number_of_zero_eigenvalues();
   if(z >= b.number_of_eigenpairs())
-    throw Invalid_input(Mesh_defect::invalid_argument, std::string(what) + ": the eigenbasis has no nonzero eigenvalue (" +
+    throw Invalid_argument(std::string(what) + ": the eigenbasis has no nonzero eigenvalue (" +
                                                            std::to_string(b.number_of_eigenpairs()) + " eigenpairs, " +
                                                            std::to_string(z) + " components): ask for more eigenpairs");
   return z;
@@ -42,7 +42,7 @@ inline std::vector<double> log_uniform(double lo, double hi, std::size_t count) 
 }
 
 inline void require_scales(std::size_t count, const char* what) {
-  if(count == 0) throw Invalid_input(Mesh_defect::invalid_argument, std::string(what) + ": number_of_scales must be positive");
+  if(count == 0) throw Invalid_argument(std::string(what) + ": number_of_scales must be positive");
 }
 
 /// h(x, t) = sum_i exp(-lambda_i t) phi_i(x)^2 for each t: n x T.
@@ -51,7 +51,7 @@ inline Eigen::MatrixXd heat_kernel_signature_matrix(const Laplace_beltrami_eigen
   Eigen::MatrixXd E(k, T);
   for(Eigen::Index j = 0; j < T; ++j) {
     if(!(times[static_cast<std::size_t>(j)] > 0) || !std::isfinite(times[static_cast<std::size_t>(j)]))
-      throw Invalid_input(Mesh_defect::invalid_argument, "heat kernel signature: times must be positive and finite");
+      throw Invalid_argument("heat kernel signature: times must be positive and finite");
     E.col(j) = (-b.eigenvalues().array().max(0.0) * times[static_cast<std::size_t>(j)]).exp();
   }
   return b.eigenvectors().array().square().matrix() * E;
@@ -60,7 +60,7 @@ inline Eigen::MatrixXd heat_kernel_signature_matrix(const Laplace_beltrami_eigen
 /// w(x, e) = sum_i phi_i(x)^2 g_i(e) / sum_i g_i(e), g_i(e) = exp(-(e - log lambda_i)^2 / 2 sigma^2),
 /// over the nonzero eigenvalues: n x E.
 inline Eigen::MatrixXd wave_kernel_signature_matrix(const Laplace_beltrami_eigenbasis& b, const std::vector<double>& energies, double sigma) {
-  if(!(sigma > 0)) throw Invalid_input(Mesh_defect::invalid_argument, "wave kernel signature: sigma must be positive");
+  if(!(sigma > 0)) throw Invalid_argument("wave kernel signature: sigma must be positive");
   const std::size_t z = first_nonzero_eigenvalue(b, "wave kernel signature");
   const Eigen::Index k = static_cast<Eigen::Index>(b.number_of_eigenpairs() - z), E = static_cast<Eigen::Index>(energies.size());
   const Eigen::ArrayXd loglambda = b.eigenvalues().tail(k).array().log();
@@ -93,11 +93,11 @@ struct Si_hks_options {
 
 inline Eigen::MatrixXd scale_invariant_hks_matrix(const Laplace_beltrami_eigenbasis& b, const Si_hks_options& o) {
   if(!(o.alpha > 1) || !(o.tau_step > 0) || !(o.tau_end > o.tau_begin))
-    throw Invalid_input(Mesh_defect::invalid_argument, "SI-HKS: needs log_time_base > 1, log_time_step > 0 and a non-empty log_time_range");
+    throw Invalid_argument("SI-HKS: needs log_time_base > 1, log_time_step > 0 and a non-empty log_time_range");
   const std::size_t J = static_cast<std::size_t>(std::llround((o.tau_end - o.tau_begin) / o.tau_step)); // differences
-  if(J < 2) throw Invalid_input(Mesh_defect::invalid_argument, "SI-HKS: the log-time range holds fewer than three samples");
+  if(J < 2) throw Invalid_argument("SI-HKS: the log-time range holds fewer than three samples");
   if(o.frequency_begin < 0 || o.frequency_end < o.frequency_begin || static_cast<std::size_t>(o.frequency_end) >= J)
-    throw Invalid_input(Mesh_defect::invalid_argument, "SI-HKS: frequency_range must satisfy 0 <= first <= last < number of log-time samples - 1");
+    throw Invalid_argument("SI-HKS: frequency_range must satisfy 0 <= first <= last < number of log-time samples - 1");
   const std::size_t z = first_nonzero_eigenvalue(b, "SI-HKS");
   (void)z;
   const double lambda_k = b.eigenvalues()[b.eigenvalues().size() - 1];
@@ -132,7 +132,7 @@ const Laplace_beltrami_eigenbasis& eigenbasis_of(const TriangleMesh& tm, const N
   const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
   if(given) {
     if(given->number_of_vertices() != n)
-      throw Invalid_input(Mesh_defect::invalid_argument, "spectral descriptor: the eigenbasis has " +
+      throw Invalid_argument("spectral descriptor: the eigenbasis has " +
                                                              std::to_string(given->number_of_vertices()) + " vertices, the mesh " +
                                                              std::to_string(n));
     return *given;

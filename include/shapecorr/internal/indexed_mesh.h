@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Internal: a flat, indexed copy of a triangle mesh (positions + corner array) on which the numerical
 // kernels run, with the correspondence between indices and the mesh's own vertex descriptors.
-#ifndef SHAPECORR_MESH_INTERNAL_INDEXED_MESH_H
-#define SHAPECORR_MESH_INTERNAL_INDEXED_MESH_H
+#ifndef SHAPECORR_INTERNAL_INDEXED_MESH_H
+#define SHAPECORR_INTERNAL_INDEXED_MESH_H
 
 #include <shapecorr/exceptions.h>
 #include <shapecorr/parameters.h>
@@ -60,8 +60,7 @@ public:
     for(vertex_descriptor v : vertices(tm)) {
       const std::size_t i = m_index(v);
       if(i >= n)
-        throw Invalid_input(Mesh_defect::invalid_argument,
-                            "vertex index map is not initialized (index " + std::to_string(i) +
+        throw Invalid_argument("vertex index map is not initialized (index " + std::to_string(i) +
                                 " for a mesh of " + std::to_string(n) + " vertices)");
       m_vertices[i] = v;
       const auto& p = get(vpm, v);

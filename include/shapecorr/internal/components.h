@@ -1,10 +1,12 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Internal: connected components of the vertices of a triangle array (union-find).
-#ifndef SHAPECORR_MESH_INTERNAL_COMPONENTS_H
-#define SHAPECORR_MESH_INTERNAL_COMPONENTS_H
+#ifndef SHAPECORR_INTERNAL_COMPONENTS_H
+#define SHAPECORR_INTERNAL_COMPONENTS_H
 
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
+
+#include <Eigen/Core>
 
 #include <numeric>
 #include <vector>

@@ -5,10 +5,10 @@
 //   (L u)_i = 1/2 sum_j (cot a_ij + cot b_ij) (u_i - u_j),   L 1 = 0.
 // Mass: lumped barycentric, M_ii = sum over incident faces of area/3, or mixed Voronoi (Meyer,
 // Desbrun, Schroeder & Barr 2003). Graph Laplacian: degree - adjacency over the mesh edges.
-#ifndef SHAPECORR_SPECTRAL_INTERNAL_COTANGENT_OPERATORS_H
-#define SHAPECORR_SPECTRAL_INTERNAL_COTANGENT_OPERATORS_H
+#ifndef SHAPECORR_INTERNAL_COTANGENT_OPERATORS_H
+#define SHAPECORR_INTERNAL_COTANGENT_OPERATORS_H
 
-#include <shapecorr/mesh/internal/intrinsic_triangulation.h>
+#include <shapecorr/internal/intrinsic_triangulation.h>
 
 #include <Eigen/Sparse>
 

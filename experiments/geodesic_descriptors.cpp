@@ -26,6 +26,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -64,10 +65,10 @@ template <typename Keep>
 Shape keep_faces(const Mesh& m, Keep&& keep) {
   Shape s;
   std::vector<std::size_t> id(m.number_of_vertices(), none);
-  std::vector<std::array<double, 3>> P;
-  std::vector<std::array<std::size_t, 3>> T;
+  std::vector<K::Point_3> P;
+  std::vector<std::vector<std::size_t>> T;
   for(auto f : m.faces()) {
-    std::array<std::size_t, 3> t;
+    std::vector<std::size_t> t(3);
     int k = 0;
     bool ok = true;
     for(auto v : vertices_around_face(m.halfedge(f), m)) {
@@ -79,14 +80,14 @@ Shape keep_faces(const Mesh& m, Keep&& keep) {
       if(id[v] == none) {
         id[v] = P.size();
         const auto& p = m.point(Vertex(static_cast<Mesh::size_type>(v)));
-        P.push_back({p.x(), p.y(), p.z()});
+        P.push_back(p);
         s.original.push_back(v);
       }
       v = id[v];
     }
     T.push_back(t);
   }
-  shapecorr::internal::soup_to_mesh(P, T, s.mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(P, T, s.mesh);
   return s;
 }
 
@@ -162,7 +163,7 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
   const std::size_t N = c.target.number_of_vertices(), S = c.points.size();
   shapecorr::Fast_marching_geodesics<Mesh> target_fm(c.target);
   std::vector<Eigen::VectorXd> gt(S), gts(c.truth_sym.empty() ? 0 : S);
-  shapecorr::internal::parallel_for(S, shapecorr::internal::resolve_thread_count(threads), [&](std::size_t i, unsigned) {
+  shapecorr::parallel_for(S, shapecorr::resolve_thread_count(threads), [&](std::size_t i, unsigned) {
     gt[i] = target_fm.distances_from(c.truth[i]);
     if(!c.truth_sym.empty()) gts[i] = target_fm.distances_from(c.truth_sym[i]);
   });
@@ -177,9 +178,7 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
     if(!gsd_target) {
       const auto np = SP::support_fraction(c.support).agd_radius_fraction(c.radius).number_of_threads(threads);
       gsd_target.reset(new G(c.target, np));
-      gsd_source.reset(new G(c.source.mesh, np.geodesic_diameter(gsd_target->geodesic_diameter())
-                                                .agd_offset(gsd_target->alpha_offset())
-                                                .agd_scale(gsd_target->alpha_scale())));
+      gsd_source.reset(new G(c.source.mesh, np.geodesic_spin_normalization(gsd_target->normalization())));
     }
   };
   std::unique_ptr<shapecorr::Laplace_beltrami_eigenbasis> basis_target, basis_source;
@@ -191,7 +190,7 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
   };
   auto prepared = [&](const std::vector<shapecorr::Spin_contour>& cs) {
     std::vector<shapecorr::Contour_nearest_point_index> x(cs.size());
-    shapecorr::internal::parallel_for(cs.size(), shapecorr::internal::resolve_thread_count(threads),
+    shapecorr::parallel_for(cs.size(), shapecorr::resolve_thread_count(threads),
                                       [&](std::size_t i, unsigned) { x[i] = shapecorr::Contour_nearest_point_index(cs[i]); });
     return x;
   };
@@ -273,7 +272,7 @@ std::vector<std::size_t> sample_points(const Mesh& m, const std::vector<bool>& h
   const std::size_t n = m.number_of_vertices();
   const std::size_t first = static_cast<std::size_t>(std::find(has_truth.begin(), has_truth.end(), true) - has_truth.begin());
   if(first == n) return {};
-  return shapecorr::internal::furthest_point_sampling_indices(n, count, first, false, [&](std::size_t s) {
+  return shapecorr::furthest_point_sampling_indices(n, count, first, [&](std::size_t s) {
     Eigen::VectorXd d = fm.distances_from(s);
     for(std::size_t v = 0; v < n; ++v)
       if(!has_truth[v]) d[static_cast<Eigen::Index>(v)] = -1;
@@ -312,7 +311,7 @@ std::string upper(std::string s) {
 } // namespace
 
 int main(int argc, char** argv) {
-  std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/geodesic";
+  std::string data = SHAPECORR_EVAL_DATA_DIR, out = "experiments/results/geodesic";
   std::string pairs = "wolf0:wolf2,centaur0:centaur1,cat0:cat1,dog0:dog1,camel3:camel1,lion:cat";
   std::string variants = "whole,cut,delete20,delete40,delete60,loop", descriptors = "gsc,gsi,hks,wks,sihks,si";
   std::size_t n_points = 50;

@@ -346,7 +346,7 @@ Mesh cut_part(const Mesh& m, Mesh::Vertex_index centre, double radius) {
 } // namespace
 
 int main(int argc, char** argv) {
-  std::string data = SHAPECORR_EVAL_DATA_DIR, out = "evaluation/results/rigid", only;
+  std::string data = SHAPECORR_EVAL_DATA_DIR, out = "experiments/results/rigid", only;
   std::size_t n_points = 1000;
   unsigned seed = 1, threads = 0;
   const int code = eval::parse_options(argc, argv, "evaluate_rigid_descriptors",

@@ -29,7 +29,7 @@ def main():
         i = args.index('--combine')
         combine = args[i + 1]
         del args[i:i + 2]
-    root = args[0] if args else 'evaluation/results/gsc-parameters'
+    root = args[0] if args else 'experiments/results/gsc-parameters'
     runs = load(root)
     if not runs:
         sys.exit('no L*_r*/summary.json under ' + root)

@@ -2,7 +2,7 @@
 """Prints the Markdown tables of doc/geodesic_spin_contour.md from the summary.json of
 evaluate_geodesic_descriptors: per case and descriptor the hit rate at k = 1 and at 1% of the
 targets, and the mean geodesic error (/ sqrt(area)) at k = 1; the best per row in bold.
-Usage: evaluation/geodesic_summary_table.py evaluation/results/geodesic/summary.json"""
+Usage: experiments/geodesic_summary_table.py experiments/results/geodesic/summary.json"""
 import json
 import sys
 

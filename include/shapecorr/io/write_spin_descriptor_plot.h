@@ -3,8 +3,8 @@
 /// \file write_spin_descriptor_plot.h
 /// A picture of one spin descriptor: the spin image and its Spin Contour side by side (the view of
 /// the thesis's Figure 3.3).
-#ifndef SHAPECORR_DESCRIPTORS_WRITE_SPIN_DESCRIPTOR_PLOT_H
-#define SHAPECORR_DESCRIPTORS_WRITE_SPIN_DESCRIPTOR_PLOT_H
+#ifndef SHAPECORR_IO_WRITE_SPIN_DESCRIPTOR_PLOT_H
+#define SHAPECORR_IO_WRITE_SPIN_DESCRIPTOR_PLOT_H
 
 #include <shapecorr/descriptors/Spin_contour.h>
 #include <shapecorr/descriptors/Spin_image.h>
@@ -25,9 +25,9 @@ namespace shapecorr {
 inline Rgb_picture spin_descriptor_picture(const Spin_image& img, const Spin_contour& contour, std::size_t scale = 4) {
   const std::size_t rows = img.rows() ? img.rows() : contour.rows();
   const std::size_t cols = img.cols() ? img.cols() : std::max<std::size_t>(1, rows / 2);
-  if(rows == 0) throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptor picture: nothing to draw");
+  if(rows == 0) throw Invalid_argument("spin descriptor picture: nothing to draw");
   if(img.rows() && contour.rows() && img.rows() != contour.rows())
-    throw Invalid_input(Mesh_defect::invalid_argument, "spin descriptor picture: image and contour have different numbers of rows");
+    throw Invalid_argument("spin descriptor picture: image and contour have different numbers of rows");
   const std::size_t gap = 2 * scale, W = cols * scale, H = rows * scale;
   Rgb_picture pic(2 * W + 3 * gap, H + 2 * gap);
   const std::array<std::uint8_t, 3> frame = {{160, 160, 160}};

@@ -3,10 +3,12 @@
 // Internal: a triangulation described by edge lengths only (the intrinsic metric), with the
 // edge flips that turn it into an intrinsic Delaunay triangulation (Bobenko & Springborn 2007;
 // Sharp, Soliman & Crane 2019). Vertices are those of the input; faces may change.
-#ifndef SHAPECORR_MESH_INTERNAL_INTRINSIC_TRIANGULATION_H
-#define SHAPECORR_MESH_INTERNAL_INTRINSIC_TRIANGULATION_H
+#ifndef SHAPECORR_INTERNAL_INTRINSIC_TRIANGULATION_H
+#define SHAPECORR_INTERNAL_INTRINSIC_TRIANGULATION_H
 
-#include <shapecorr/mesh/internal/indexed_mesh.h>
+#include <shapecorr/internal/indexed_mesh.h>
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints the Markdown tables of doc/rigid_descriptors.md from an evaluation summary.json:
 AUC (final recall) per experiment and descriptor, best per row in bold, and the summed distance of
-the incorrect matches. Usage: evaluation/summary_table.py evaluation/results/rigid/summary.json"""
+the incorrect matches. Usage: experiments/summary_table.py experiments/results/rigid/summary.json"""
 import json
 import sys
 

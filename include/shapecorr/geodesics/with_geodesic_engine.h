@@ -1,9 +1,9 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Internal: run a piece of work with the geodesic engine the named parameters ask for: the one
-// passed as `geodesic_engine(&engine)`, or a fresh engine of the `geodesic_method` requested.
-#ifndef SHAPECORR_GEODESICS_INTERNAL_WITH_GEODESIC_ENGINE_H
-#define SHAPECORR_GEODESICS_INTERNAL_WITH_GEODESIC_ENGINE_H
+/// \file with_geodesic_engine.h
+/// Runs a piece of work with the geodesic engine that named parameters ask for.
+#ifndef SHAPECORR_GEODESICS_WITH_GEODESIC_ENGINE_H
+#define SHAPECORR_GEODESICS_WITH_GEODESIC_ENGINE_H
 
 #include <shapecorr/internal/progress.h>
 #include <shapecorr/geodesics/Exact_geodesics.h>
@@ -15,8 +15,23 @@
 #include <type_traits>
 
 namespace shapecorr {
-namespace internal {
 
+/// \ingroup PkgShapeCorrGeodesics
+/// Calls `fn(engine)` with the geodesic distance engine (a model of `GeodesicDistanceEngine`, see
+/// doc/concepts.md) that `np` asks for: the one passed as `parameters::geodesic_engine(&engine)`,
+/// else a fresh `Exact_geodesics`, `Fast_marching_geodesics` or `Heat_method_geodesics` of `tm`
+/// built with `np`, as `parameters::geodesic_method` names (default: `default_method`). This is how
+/// every ShapeCorr function that needs distances chooses its engine; algorithms written on top of
+/// the library use it to accept the same parameters.
+/// \tparam Fn a callable accepting each engine type by const reference; its return type must be
+///   the same for all of them
+/// \param np optional named parameters: `geodesic_engine`, `geodesic_method`, and the chosen
+///   engine's own parameters (`vertex_point_map`, `vertex_index_map`, `time_step_factor`, ...)
+/// \returns what `fn` returns
+/// \code
+///   double d = shapecorr::with_geodesic_engine(tm, SP::geodesic_method(shapecorr::Geodesic_method::EXACT),
+///       [](const auto& engine) { return engine.distances_from(0).maxCoeff(); });
+/// \endcode
 template <typename TriangleMesh, typename NamedParameters, typename Fn>
 decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameters& np, Fn&& fn,
                                     Geodesic_method default_method = Geodesic_method::HEAT) {
@@ -42,7 +57,6 @@ decltype(auto) with_geodesic_engine(const TriangleMesh& tm, const NamedParameter
   }
 }
 
-} // namespace internal
 } // namespace shapecorr
 
 #endif

@@ -1,0 +1,138 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// shapecorr geodesics, sample and agd: distances, furthest point samples, average geodesic distance.
+#include "cli_common.h"
+
+#include <shapecorr/geodesics.h>
+#include <shapecorr/sampling.h>
+
+#include <chrono>
+
+namespace cli {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+int run_geodesics(const Args& a) {
+  Mesh m = read_mesh(a);
+  const std::vector<std::size_t> ids = parse_ids(a.require("source"), m.number_of_vertices());
+  const std::string output = a.require("output");
+  const auto method = shapecorr::geodesic_method_from_string(a.get("method", "heat"));
+  std::vector<vertex_descriptor> sources;
+  for(std::size_t i : ids) sources.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
+  auto dist = m.add_property_map<vertex_descriptor, double>("v:dist", 0.0).first;
+  const auto t0 = std::chrono::steady_clock::now();
+  shapecorr::compute_geodesic_distances(m, sources, dist, shapecorr::parameters::geodesic_method(method));
+  const double secs = seconds_since(t0);
+  std::vector<double> values(m.number_of_vertices());
+  double dmax = 0;
+  std::size_t unreachable = 0;
+  for(vertex_descriptor v : vertices(m)) {
+    values[v.idx()] = dist[v];
+    if(std::isfinite(dist[v])) dmax = std::max(dmax, dist[v]);
+    else ++unreachable;
+  }
+  write_values(output, m, values, ids);
+  if(verbose(a)) {
+    std::cerr << "geodesics: " << ids.size() << " source(s), method " << a.get("method", "heat") << ", max distance " << dmax << ", "
+              << secs << " s -> " << output << "\n";
+    if(unreachable)
+      std::cerr << "note: " << unreachable << " vertices lie in components without a source: their distance is inf\n";
+  }
+  return 0;
+}
+
+int run_sample(const Args& a) {
+  const Mesh m = read_mesh(a);
+  const std::size_t count = to_count(a.require("count"), "--count");
+  const unsigned seed = static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed"));
+  const std::string metric = a.get("metric", "geodesic");
+  if(metric != "geodesic" && metric != "euclidean") throw Usage_error("sample: --metric must be geodesic or euclidean");
+  std::vector<vertex_descriptor> samples;
+  shapecorr::furthest_point_sampling(m, count, std::back_inserter(samples),
+                                     shapecorr::parameters::distance_metric(metric == "geodesic" ? shapecorr::Distance_metric::GEODESIC
+                                                                                                 : shapecorr::Distance_metric::EUCLIDEAN)
+                                         .random_seed(seed));
+  std::ostringstream o;
+  for(vertex_descriptor v : samples) o << v.idx() << "\n";
+  if(a.has("output")) {
+    std::ofstream out = open_output(a.get("output"));
+    out << o.str();
+  } else {
+    std::cout << o.str();
+  }
+  return 0;
+}
+
+int run_agd(const Args& a) {
+  Mesh m = read_mesh(a);
+  const std::string output = a.require("output");
+  auto agd = m.add_property_map<vertex_descriptor, double>("v:agd", 0.0).first;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string what;
+  if(a.has("radius")) {
+    if(a.has("sources")) throw Usage_error("agd: --sources applies to the global agd, not with --radius");
+    const double fraction = to_double(a.get("radius"), "--radius");
+    const double D = shapecorr::geodesic_diameter(m);
+    shapecorr::compute_local_average_geodesic_distance(m, fraction * D, agd);
+    what = "local agd, r = " + a.get("radius") + " D (D = " + std::to_string(D) + ")";
+  } else {
+    const std::size_t k = to_count(a.get("sources", "100"), "--sources");
+    shapecorr::compute_average_geodesic_distance(m, agd, shapecorr::parameters::number_of_sources(k));
+    what = "global agd from " + (k == 0 ? std::string("all") : std::to_string(k)) + " sources";
+  }
+  const double secs = seconds_since(t0);
+  std::vector<double> values(m.number_of_vertices());
+  for(vertex_descriptor v : vertices(m)) values[v.idx()] = agd[v];
+  write_values(output, m, values);
+  if(verbose(a)) std::cerr << "agd: " << what << ", " << secs << " s -> " << output << "\n";
+  return 0;
+}
+
+std::vector<Option> with_mesh_options(std::vector<Option> o) {
+  for(const Option& x : mesh_reading_options()) o.push_back(x);
+  return o;
+}
+
+} // namespace
+
+const Command& geodesics_command() {
+  static const Command c{"geodesics", "geodesics MESH --source V[,V...] [--method heat|exact|fmm] --output FILE",
+                         "Geodesic distance of every vertex to the nearest source (0-based vertex ids): heat method "
+                         "(default, fast), exact (CGAL's shortest paths) or fast marching. FILE.csv: one distance per "
+                         "line in vertex order; FILE.ply: the mesh coloured by distance, sources marked. Vertices of "
+                         "components without a source get inf (a note says how many).",
+                         with_mesh_options({{"source", "V[,V...]", "source vertex ids"},
+                                            {"method", "heat|exact|fmm", "distance backend (default heat)"},
+                                            {"output", "FILE", ".csv (values) or .ply (coloured mesh)"}}),
+                         1, 1, run_geodesics};
+  return c;
+}
+
+const Command& sample_command() {
+  static const Command c{"sample", "sample MESH --count N [--metric geodesic|euclidean] [--seed S] [--output FILE]",
+                         "Furthest point sampling (thesis chapter 5): N vertex ids in selection order, one per line, on "
+                         "stdout or in FILE. The arbitrary start vertex, drawn with the seed, is not among them.",
+                         with_mesh_options({{"count", "N", "number of samples"},
+                                            {"metric", "geodesic|euclidean", "distance between samples (default geodesic, heat method)"},
+                                            {"seed", "S", "seed of the start vertex (default 0)"},
+                                            {"output", "FILE", "write the ids here instead of stdout"}}),
+                         1, 1, run_sample};
+  return c;
+}
+
+const Command& agd_command() {
+  static const Command c{"agd", "agd MESH [--radius FRACTION | --sources K] --output FILE",
+                         "Average geodesic distance of every vertex (thesis chapter 4): global, from K furthest-point "
+                         "sources weighted by their Voronoi areas (default 100; 0 = every vertex), or local, within "
+                         "FRACTION x the geodesic diameter. FILE.csv: one value per line; FILE.ply: coloured mesh.",
+                         with_mesh_options({{"radius", "FRACTION", "local agd within FRACTION x D"},
+                                            {"sources", "K", "global agd from K sources (default 100, 0 = all)"},
+                                            {"output", "FILE", ".csv (values) or .ply (coloured mesh)"}}),
+                         1, 1, run_agd};
+  return c;
+}
+
+} // namespace cli

@@ -1,0 +1,22 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The command table: one line per command (each defined in its cmd_*.cpp), in help order.
+#include "command.h"
+
+namespace cli {
+
+const Command& info_command();
+const Command& generate_command();
+const Command& geodesics_command();
+const Command& sample_command();
+const Command& agd_command();
+const Command& descriptors_command();
+const Command& match_command();
+
+const std::vector<Command>& command_table() {
+  static const std::vector<Command> table = {info_command(),   generate_command(),    geodesics_command(), sample_command(),
+                                             agd_command(),    descriptors_command(), match_command()};
+  return table;
+}
+
+} // namespace cli

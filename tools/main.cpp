@@ -1,0 +1,53 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The shapecorr command-line program: finds the command in the table, checks its arguments, runs
+// it, and turns errors into one line on stderr and an exit code (1: error, 2: bad usage).
+#include "command.h"
+
+#include <shapecorr/exceptions.h>
+
+#include <iostream>
+#include <string>
+
+int main(int argc, char** argv) {
+  using namespace cli;
+  const std::string first = argc < 2 ? "" : argv[1];
+  if(argc < 2 || first == "--help" || first == "-h" || first == "help") {
+    std::cout << program_help();
+    return argc < 2 ? 2 : 0;
+  }
+  if(first == "--version") {
+    std::cout << "shapecorr 0.1.0\n";
+    return 0;
+  }
+  try {
+    for(const Command& c : command_table()) {
+      if(c.name != first) continue;
+      const Args a = parse_arguments(c, argc, argv, 2);
+      if(a.has("help")) {
+        std::cout << command_help(c);
+        return 0;
+      }
+      return c.run(a);
+    }
+    throw Usage_error("unknown command '" + first + "' (see shapecorr --help)");
+  } catch(const Usage_error& e) {
+    std::cerr << "shapecorr: " << e.what() << "\n";
+    return 2;
+  } catch(const shapecorr::Invalid_input& e) {
+    std::cerr << "shapecorr: error: " << e.what() << " [" << shapecorr::to_string(e.defect()) << "]\n";
+    return 1;
+  } catch(const shapecorr::Invalid_argument& e) {
+    std::cerr << "shapecorr: error: " << e.what() << " [invalid_argument]\n";
+    return 1;
+  } catch(const shapecorr::Output_error& e) {
+    std::cerr << "shapecorr: error: " << e.what() << " [output_error]\n";
+    return 1;
+  } catch(const shapecorr::Solver_failure& e) {
+    std::cerr << "shapecorr: error: " << e.what() << " [solver_failure]\n";
+    return 1;
+  } catch(const std::exception& e) {
+    std::cerr << "shapecorr: error: " << e.what() << "\n";
+    return 1;
+  }
+}
