@@ -43,7 +43,7 @@ namespace shapecorr {
 class Contour_distance_field {
 public:
   Contour_distance_field() = default;
-  /// \throws Invalid_input when `alpha_samples` < 2 or the contour has no rows
+  /// \throws Invalid_argument when `alpha_samples` < 2 or the contour has no rows
   explicit Contour_distance_field(const Spin_contour& contour, std::size_t alpha_samples = 121)
     : m_contour(contour), m_samples(alpha_samples) {
     if(alpha_samples < 2) throw Invalid_argument("contour distance field: need at least 2 alpha samples");
@@ -84,7 +84,7 @@ public:
 
   /// The distance from the point (alpha, beta of row r) to the contour, interpolated (+infinity
   /// for an empty contour).
-  /// \throws Invalid_input when r is not a row
+  /// \throws Invalid_argument when r is not a row
   double distance(std::size_t r, double alpha) const {
     if(r >= rows()) throw Invalid_argument("contour distance field: row " + std::to_string(r) + " of " + std::to_string(rows()));
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
@@ -95,7 +95,7 @@ public:
 
   /// The sum over the points of `other` (a contour on the same rows) of their distances to this
   /// contour; stops early, returning a value > `bound`, once the sum exceeds `bound`.
-  /// \throws Invalid_input when the numbers of rows differ
+  /// \throws Invalid_argument when the numbers of rows differ
   double sum_of_distances(const Spin_contour& other, double bound = std::numeric_limits<double>::infinity()) const {
     require_rows(other.rows());
     if(other.empty()) return 0.0;
@@ -234,7 +234,7 @@ private:
 /// interpolated distances; differs from the exact value by at most the larger `error_bound()` of
 /// the two fields. Symmetric; 0 for two empty contours, +infinity when only one is empty. With
 /// `bound`: stops once the result is known to exceed it and returns some value > `bound`.
-/// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
+/// \throws Invalid_argument when the numbers of rows differ or the rows lie on different lines
 inline double approximate_contour_l1_distance(const Contour_distance_field& X, const Contour_distance_field& Y,
                                               double bound = std::numeric_limits<double>::infinity()) {
   return internal::symmetric_contour_l1(X.contour(), Y.contour(), bound, [&](double limit) { return Y.sum_of_distances(X, limit); },

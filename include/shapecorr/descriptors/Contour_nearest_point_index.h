@@ -55,7 +55,7 @@ namespace shapecorr {
 class Contour_nearest_point_index {
 public:
   Contour_nearest_point_index() = default;
-  /// \throws Invalid_input when `cells_per_row` is 0 or above 65536, or the contour has no rows or
+  /// \throws Invalid_argument when `cells_per_row` is 0 or above 65536, or the contour has no rows or
   /// more than 65535
   explicit Contour_nearest_point_index(const Spin_contour& contour, std::size_t cells_per_row = 128)
     : m_contour(contour), m_cells(cells_per_row) {
@@ -93,7 +93,7 @@ public:
 
   /// The distance from the point (alpha, beta of row r) to the contour (+infinity for an empty
   /// contour).
-  /// \throws Invalid_input when r is not a row
+  /// \throws Invalid_argument when r is not a row
   double distance(std::size_t r, float alpha) const {
     if(r >= rows()) throw Invalid_argument("contour nearest-point index: row " + std::to_string(r) + " of " + std::to_string(rows()));
     if(m_contour.empty()) return std::numeric_limits<double>::infinity();
@@ -104,7 +104,7 @@ public:
   /// The sum over the points of `other` (a contour on the same rows) of their distances to this
   /// contour, equal to the sum of `contour_l1_distance`; stops early, returning a value > `bound`,
   /// once the sum exceeds `bound`.
-  /// \throws Invalid_input when the numbers of rows differ
+  /// \throws Invalid_argument when the numbers of rows differ
   double sum_of_distances(const Contour_nearest_point_index& other, double bound = std::numeric_limits<double>::infinity()) const {
     if(other.rows() != rows())
       throw Invalid_argument("contour nearest-point index: " + std::to_string(other.rows()) + " rows against " + std::to_string(rows()));
@@ -267,7 +267,7 @@ private:
 /// \ingroup PkgShapeCorrDescriptors
 /// The symmetric normalized L1 distance of two prepared contours: the value of
 /// `contour_l1_distance(X.contour(), Y.contour(), bound)`, from the nearest-point indices.
-/// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
+/// \throws Invalid_argument when the numbers of rows differ or the rows lie on different lines
 inline double contour_l1_distance(const Contour_nearest_point_index& X, const Contour_nearest_point_index& Y,
                                   double bound = std::numeric_limits<double>::infinity()) {
   return internal::symmetric_contour_l1(X.contour(), Y.contour(), bound, [&](double limit) { return Y.sum_of_distances(X, limit); },

@@ -138,7 +138,7 @@ double symmetric_contour_l1(const Spin_contour& X, const Spin_contour& Y, double
 /// `point_set_l1_distance`). 0 for two empty contours, +infinity when only one is empty.
 /// With `bound`: the computation stops as soon as the result is known to exceed `bound` and then
 /// returns some value > `bound` (matching only needs the distances below the second best).
-/// \throws Invalid_input when the numbers of rows differ or the rows lie on different lines
+/// \throws Invalid_argument when the numbers of rows differ or the rows lie on different lines
 inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y,
                                   double bound = std::numeric_limits<double>::infinity()) {
   return internal::symmetric_contour_l1(X, Y, bound, [&](double limit) { return internal::directed_contour_sum(X, Y, limit); },

@@ -45,7 +45,7 @@ private:
 /// The linear correlation coefficient R of two spin images over their overlap (the bins where both
 /// are nonzero; Johnson & Hebert 1999, eq. 2), and the size N of the overlap. R = 0 when N < 2 or a
 /// side is constant on the overlap.
-/// \throws Invalid_input when the sizes differ
+/// \throws Invalid_argument when the sizes differ
 inline std::pair<double, std::size_t> spin_image_correlation(const Spin_image& a, const Spin_image& b) {
   if(a.rows() != b.rows() || a.cols() != b.cols())
     throw Invalid_argument("spin image comparison: sizes differ (" + std::to_string(a.rows()) + "x" +

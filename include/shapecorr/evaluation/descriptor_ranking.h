@@ -123,7 +123,7 @@ Ranking_curves evaluate_ranking(std::size_t sources, std::size_t targets, Distan
 /// geodesic errors are divided by `normalization` (the Princeton benchmark's sqrt(area)).
 /// Source points run in parallel on `threads` threads (0: all cores); `distance` and
 /// `geodesics_from` must be safe to call concurrently.
-/// \throws Invalid_input on sizes that do not fit or a non-positive normalization
+/// \throws Invalid_argument on sizes that do not fit or a non-positive normalization
 template <typename DistanceFn, typename GeodesicFn>
 Ranking_curves evaluate_descriptor_ranking(std::size_t sources, std::size_t targets, DistanceFn&& distance, const std::vector<std::size_t>& truth,
                                            GeodesicFn&& geodesics_from, double normalization, unsigned threads = 0) {

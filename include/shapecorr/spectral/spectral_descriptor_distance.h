@@ -16,7 +16,7 @@ namespace shapecorr {
 /// (L2) norm of their difference. With the default `normalize_per_scale(true)` of HKS and WKS every
 /// scale enters with the same weight (each was divided by its mean over its own surface).
 /// \tparam Range a range of `double` (`std::vector<double>`, an Eigen vector...)
-/// \throws Invalid_input when the lengths differ
+/// \throws Invalid_argument when the lengths differ
 template <typename Range1, typename Range2>
 double spectral_descriptor_distance(const Range1& a, const Range2& b) {
   auto ia = std::begin(a);
