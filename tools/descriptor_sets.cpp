@@ -171,7 +171,7 @@ void write_descriptor_plot(const Mesh& m, const Args& a, const std::string& type
     const shapecorr::Spin_contour c = gs->geodesic_spin_contour(vd);
     shapecorr::write_spin_descriptor_plot(output, img, c);
     if(verbose(a))
-      std::cerr << "descriptors: vertex " << v << ", geodesic spin image " << img.rows() << "x" << img.cols() << " and its Geodesic Spin Contour ("
+      std::cerr << "descriptors: vertex " << v << ", geodesic spin image " << img.rows() << "x" << img.columns() << " and its Geodesic Spin Contour ("
                 << c.size() << " points; gd grows downwards, agd to the right) -> " << output << "\n";
     return;
   }
@@ -184,7 +184,7 @@ void write_descriptor_plot(const Mesh& m, const Args& a, const std::string& type
   if(verbose(a))
     std::cerr << "descriptors: vertex " << v << ", "
               << (point_image ? "spin image" : a.has("exact-area") ? "face-based spin image (exact areas)" : "face-based spin image") << " "
-              << img.rows() << "x" << img.cols() << " and its Spin Contour (" << c.size() << " points)"
+              << img.rows() << "x" << img.columns() << " and its Spin Contour (" << c.size() << " points)"
               << (op.fell_back_to_normal ? ", axis fell back to the normal" : "") << " -> " << output << "\n";
 }
 

@@ -56,9 +56,10 @@ Fixture& fixture() {
 
 void BM_GSC_FromDistances(benchmark::State& state) {
   Fixture& fx = fixture();
+  GSD::Workspace ws(*fx.gsd);
   std::size_t i = 0, points = 0, count = 0;
   for(auto _ : state) {
-    const shapecorr::Spin_contour c = fx.gsd->geodesic_spin_contour(fx.balls[i++ % 64]);
+    const shapecorr::Spin_contour c = fx.gsd->geodesic_spin_contour(fx.balls[i++ % 64], ws);
     points += c.size();
     ++count;
     benchmark::DoNotOptimize(c.size());
@@ -89,21 +90,24 @@ BENCHMARK(bench::BM_Reference_ClockCycles)->Name("BM_Reference_ClockCycles")->Un
 void BM_GSC_AllVertices_FromDistances(benchmark::State& state) {
   Fixture& fx = fixture();
   const std::size_t n = fx.gsd->number_of_vertices();
+  const unsigned threads = shapecorr::resolve_thread_count(0);
+  std::vector<GSD::Workspace> ws;
+  for(unsigned t = 0; t < threads; ++t) ws.emplace_back(*fx.gsd);
   static std::vector<GSD::Ball> all; // every vertex's ball (about 150 MB on the wolf)
   if(all.empty()) {
     all.resize(n);
-    shapecorr::parallel_for(n, 0, [&](std::size_t i, unsigned) { fx.gsd->support_ball(i, all[i]); });
+    shapecorr::parallel_for(n, threads, [&](std::size_t i, unsigned tid) { fx.gsd->support_ball(i, all[i], ws[tid]); });
   }
   std::vector<std::size_t> points(n);
   for(auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
-    shapecorr::parallel_for(n, 0, [&](std::size_t i, unsigned) { points[i] = fx.gsd->geodesic_spin_contour(all[i]).size(); });
+    shapecorr::parallel_for(n, threads, [&](std::size_t i, unsigned tid) { points[i] = fx.gsd->geodesic_spin_contour(all[i], ws[tid]).size(); });
     const auto t1 = std::chrono::steady_clock::now();
     state.SetIterationTime(std::chrono::duration<double>(t1 - t0).count());
     benchmark::DoNotOptimize(points.data());
   }
   state.counters["vertices"] = static_cast<double>(n);
-  state.counters["threads"] = static_cast<double>(shapecorr::resolve_thread_count(0));
+  state.counters["threads"] = static_cast<double>(threads);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 BENCHMARK(BM_GSC_AllVertices_FromDistances)->Unit(benchmark::kMillisecond)->Iterations(3)->UseManualTime();
@@ -111,11 +115,12 @@ BENCHMARK(BM_GSC_AllVertices_FromDistances)->Unit(benchmark::kMillisecond)->Iter
 // One radius-limited march to L + the longest edge (the distances one GSC needs).
 void BM_GSC_SupportBall(benchmark::State& state) {
   Fixture& fx = fixture();
+  GSD::Workspace ws(*fx.gsd);
   GSD::Ball ball;
   std::size_t i = 0;
   const std::size_t n = fx.gsd->number_of_vertices();
   for(auto _ : state) {
-    fx.gsd->support_ball((i++ * 67) % n, ball);
+    fx.gsd->support_ball((i++ * 67) % n, ball, ws);
     benchmark::DoNotOptimize(ball.data());
   }
 }

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   shapecorr::Heat_method_geodesics<Mesh> heat(mesh, shapecorr::parameters::use_intrinsic_delaunay(true));
   auto distance = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
   const vertex_descriptor source(0);
-  heat.estimate_geodesic_distances(std::vector<vertex_descriptor>{source}, distance);
+  heat.compute_geodesic_distances(std::vector<vertex_descriptor>{source}, distance);
 
   // The reference: CGAL's exact shortest paths, through the one-call function.
   auto exact = mesh.add_property_map<vertex_descriptor, double>("v:exact", 0).first;

@@ -54,6 +54,7 @@ inline const char* to_string(Mesh_defect d) {
 /// Bad input data: the message says what is wrong and where (file, vertex or face index).
 class Invalid_input : public Error {
 public:
+  /// The kind of defect and a message saying what and where.
   Invalid_input(Mesh_defect defect, const std::string& what)
     : Error(what), m_defect(defect) {}
   /// The kind of problem.

@@ -10,7 +10,7 @@
 /// also offers every CGAL builder, so one chain can mix both in any order:
 /// \code
 ///   namespace SP = shapecorr::parameters;
-///   shapecorr::estimate_geodesic_distances(tm, source, dmap,
+///   shapecorr::compute_geodesic_distances(tm, sources, dmap,
 ///       SP::geodesic_method(shapecorr::Geodesic_method::EXACT).vertex_point_map(vpm));
 /// \endcode
 #ifndef SHAPECORR_PARAMETERS_H
@@ -21,21 +21,24 @@
 
 namespace shapecorr {
 
+#ifndef SHAPECORR_DOXYGEN_RUNNING // (the tags and builders are generated from one list)
 namespace internal_np {
 #define SHAPECORR_add_named_parameter(X, Y, Z) enum X { Y };
 #include <shapecorr/internal/parameters_interface.h>
 #undef SHAPECORR_add_named_parameter
 } // namespace internal_np
+#endif
 
 /// A chain of named parameters: CGAL's `Named_function_parameters` (so CGAL's `get_parameter`
 /// reads it) that can be extended with CGAL's and ShapeCorr's tags alike.
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
 struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base> {
-  typedef CGAL::Named_function_parameters<T, Tag, Base> cgal_base;
-  typedef Named_function_parameters<T, Tag, Base> self;
-  Named_function_parameters() : cgal_base() {}
-  Named_function_parameters(const T& v) : cgal_base(v) {}
-  Named_function_parameters(const T& v, const Base& b) : cgal_base(v, b) {}
+  typedef CGAL::Named_function_parameters<T, Tag, Base> cgal_base; ///< what CGAL's functions read
+  typedef Named_function_parameters<T, Tag, Base> self;             ///< this chain
+  Named_function_parameters() : cgal_base() {}                      ///< the empty chain
+  Named_function_parameters(const T& v) : cgal_base(v) {}           ///< a chain of one parameter
+  Named_function_parameters(const T& v, const Base& b) : cgal_base(v, b) {} ///< parameter `v` in front of chain `b`
+#ifndef SHAPECORR_DOXYGEN_RUNNING
 
 #define CGAL_add_named_parameter(X, Y, Z)                                                          \
   template <typename K>                                                                            \
@@ -51,6 +54,7 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   }
 #include <shapecorr/internal/parameters_interface.h>
 #undef SHAPECORR_add_named_parameter
+#endif
 };
 
 namespace parameters {
@@ -60,6 +64,7 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
   return Named_function_parameters<bool, CGAL::internal_np::all_default_t>();
 }
 
+#ifndef SHAPECORR_DOXYGEN_RUNNING
 #define CGAL_add_named_parameter(X, Y, Z)                                                          \
   template <typename K>                                                                            \
   Named_function_parameters<K, CGAL::internal_np::X> Z(const K& p) {                              \
@@ -74,7 +79,9 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
   }
 #include <shapecorr/internal/parameters_interface.h>
 #undef SHAPECORR_add_named_parameter
+#endif
 
+/// The type of `CGAL::parameters::default_values()`: the default of every `np` argument.
 typedef CGAL::parameters::Default_named_parameters Default_named_parameters;
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::get_parameter;

@@ -93,9 +93,9 @@ void make_legged_sphere(Mesh& m) {
 // The contour of a ball with the walks seeded by descent, and seeded from every face.
 template <typename G, typename Ball>
 std::pair<shapecorr::Spin_contour, shapecorr::Spin_contour> both_seedings(G& g, const Ball& ball) {
-  g.use_descent_seeds(true);
+  shapecorr::internal::Geodesic_spin_descriptors_access::use_descent_seeds(g, true);
   shapecorr::Spin_contour a = g.geodesic_spin_contour(ball);
-  g.use_descent_seeds(false);
+  shapecorr::internal::Geodesic_spin_descriptors_access::use_descent_seeds(g, false);
   shapecorr::Spin_contour b = g.geodesic_spin_contour(ball);
   return {a, b};
 }
@@ -285,6 +285,26 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
   }
 }
 
+TEMPLATE_TEST_CASE("workspaces: one per thread gives the shared workspace's contours; another object's is refused", "[descriptors][gsc]",
+                   test::Surface_mesh, test::Polyhedron) {
+  TestType m;
+  shapecorr::make_icosphere(m, 3);
+  test::transform_points(m, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(1.2 * p.x(), p.y() + 0.1 * p.x() * p.x(), 0.8 * p.z()); });
+  typedef shapecorr::Geodesic_spin_descriptors<TestType> G;
+  const G g(m, SP::support_fraction(0.3)), other(m, SP::support_fraction(0.3));
+  const auto vs = vertex_list(m);
+  const std::size_t n = vs.size();
+  std::vector<shapecorr::Spin_contour> shared(n), mine(n);
+  for(std::size_t i = 0; i < n; ++i) shared[i] = g.geodesic_spin_contour(vs[i]);
+  std::vector<typename G::Workspace> ws;
+  for(unsigned t = 0; t < 3; ++t) ws.emplace_back(g);
+  shapecorr::parallel_for(n, 3, [&](std::size_t i, unsigned tid) { mine[i] = g.geodesic_spin_contour(vs[i], ws[tid]); });
+  for(std::size_t i = 0; i < n; ++i) REQUIRE(mine[i].points() == shared[i].points());
+  typename G::Workspace foreign(other);
+  CHECK_THROWS_AS(g.geodesic_spin_contour(vs[0], foreign), shapecorr::Invalid_argument);
+  CHECK(other.geodesic_spin_contour(vs[0], foreign).points() == shared[0].points());
+}
+
 TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
   TestType flat, rolled;
   make_strip(flat, 40, 10, 4.0, 1.0, 0.0);
@@ -294,7 +314,7 @@ TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[
   const auto va = vertex_list(flat), vb = vertex_list(rolled);
   const auto ia = a.geodesic_spin_image(va[100]), ib = b.geodesic_spin_image(vb[100]);
   CHECK(ia.rows() == 64);
-  CHECK(ia.cols() == 64);
+  CHECK(ia.columns() == 64);
   // the image's mass is the area of the disc gd <= L (up to splatting at the border)
   double mass = 0;
   for(float x : ia.values()) mass += x;
@@ -445,7 +465,7 @@ TEST_CASE("GSC on the TOSCA wolf: walks seeded by descent give the bits of walks
   std::vector<std::size_t> ids;
   for(std::size_t i = 0; i < g.number_of_vertices(); i += 11) ids.push_back(i);
   const auto a = g.geodesic_spin_contours(ids);
-  g.use_descent_seeds(false);
+  shapecorr::internal::Geodesic_spin_descriptors_access::use_descent_seeds(g, false);
   const auto b = g.geodesic_spin_contours(ids);
   std::size_t same = 0, gaps = 0;
   for(std::size_t k = 0; k < ids.size(); ++k) {

@@ -67,12 +67,17 @@ public:
       }
   }
 
+  /// The contour the field was built from.
   const Spin_contour& contour() const { return m_contour; }
+  /// Number of rows.
   std::size_t rows() const { return m_contour.rows(); }
+  /// Number of alpha samples per row.
   std::size_t alpha_samples() const { return m_samples; }
   /// The sampled alpha range [alpha_min(), alpha_max()] and the spacing of the samples.
   double alpha_min() const { return m_lo; }
+  /// The largest sampled alpha.
   double alpha_max() const { return m_hi; }
+  /// Distance between two alpha samples.
   double sample_spacing() const { return m_step; }
   /// Largest difference between `distance(r, alpha)` and the exact distance, for alpha in the
   /// sampled range (normalized units).
@@ -244,6 +249,7 @@ inline double approximate_contour_l1_distance(const Contour_distance_field& X, c
 /// \ingroup PkgShapeCorrDescriptors
 /// The distance functor of prepared contours for the matchers (`approximate_contour_l1_distance`).
 struct Approximate_contour_l1_distance {
+  /// `approximate_contour_l1_distance(a, b)`
   double operator()(const Contour_distance_field& a, const Contour_distance_field& b) const { return approximate_contour_l1_distance(a, b); }
   /// early-exit form used by `match_descriptors`
   double operator()(const Contour_distance_field& a, const Contour_distance_field& b, double bound) const {

@@ -78,8 +78,11 @@ public:
       }
   }
 
+  /// The contour the index was built from.
   const Spin_contour& contour() const { return m_contour; }
+  /// Number of rows.
   std::size_t rows() const { return m_contour.rows(); }
+  /// Number of alpha cells per row line.
   std::size_t cells_per_row() const { return m_cells; }
   /// Number of envelope pieces over all rows.
   std::size_t number_of_pieces() const { return m_piece_alpha.size() - rows(); }
@@ -277,6 +280,7 @@ inline double contour_l1_distance(const Contour_nearest_point_index& X, const Co
 /// \ingroup PkgShapeCorrDescriptors
 /// The distance functor of prepared contours for the matchers (`contour_l1_distance`).
 struct Indexed_contour_l1_distance {
+  /// `contour_l1_distance(a, b)`
   double operator()(const Contour_nearest_point_index& a, const Contour_nearest_point_index& b) const { return contour_l1_distance(a, b); }
   /// early-exit form used by `match_descriptors`
   double operator()(const Contour_nearest_point_index& a, const Contour_nearest_point_index& b, double bound) const {

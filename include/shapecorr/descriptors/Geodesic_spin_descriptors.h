@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <type_traits>
@@ -60,6 +61,18 @@ struct Geodesic_section {
   }
   bool keep(double&, double&) const { return true; }
   double finish(double x) const { return x; }
+};
+
+} // namespace internal
+
+template <typename TriangleMesh>
+class Geodesic_spin_descriptors;
+
+namespace internal {
+// Test access to the walk's seeding (descent seeds on a sphere, or every crossed face).
+struct Geodesic_spin_descriptors_access {
+  template <typename TriangleMesh>
+  static void use_descent_seeds(Geodesic_spin_descriptors<TriangleMesh>& g, bool on) { g.m_descent_seeds = on; }
 };
 
 } // namespace internal
@@ -123,13 +136,15 @@ struct Geodesic_spin_normalization {
 template <typename TriangleMesh>
 class Geodesic_spin_descriptors {
 public:
+  /// The mesh's vertex type.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   /// (vertex index, geodesic distance) pairs: a geodesic ball around a point.
   typedef std::vector<std::pair<std::size_t, double>> Ball;
 
   template <typename NamedParameters = parameters::Default_named_parameters>
+  /// Computes the diameter, the agd of every vertex and the topology tables (named parameters above).
   explicit Geodesic_spin_descriptors(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
-    : m_engine(tm, np), m_id(next_id()) {
+    : m_engine(tm, np) {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     const internal::Triangle_arrays& a = m_engine.arrays();
@@ -212,14 +227,20 @@ public:
   double agd_radius() const { return m_radius; }
   /// The alpha normalization alpha = (agd - alpha_offset()) / alpha_scale() (mesh units).
   double alpha_scale() const { return m_alpha_scale; }
+  /// (see `alpha_scale`)
   double alpha_offset() const { return m_alpha_offset; }
   /// D, the alpha offset and the alpha scale together: give them to the descriptors of another
   /// shape (`parameters::geodesic_spin_normalization`) to make the two comparable.
   Geodesic_spin_normalization normalization() const { return {m_diameter, m_alpha_offset, m_alpha_scale}; }
+  /// Number of rows (beta = gd samples).
   std::size_t rows() const { return m_rows; }
+  /// Number of columns (alpha samples).
   std::size_t columns() const { return m_cols; }
+  /// Number of vertices of the mesh.
   std::size_t number_of_vertices() const { return m_engine.number_of_vertices(); }
+  /// The 0-based index of `v`.
   std::size_t index(vertex_descriptor v) const { return m_engine.index(v); }
+  /// The vertex of index `i`.
   vertex_descriptor vertex(std::size_t i) const { return m_engine.vertex(i); }
   /// The average geodesic distance of every vertex (engine's index order), mesh units.
   const std::vector<double>& average_geodesic_distances() const { return m_agd; }
@@ -230,42 +251,77 @@ public:
   /// (see doc/geodesic_spin_contour.md) instead of every face an isoline crosses, when the ball
   /// allows it (one minimum, no vertex exactly on a row, complete); the contours are the same.
   bool is_topological_sphere() const { return m_sphere; }
-  /// With `false`, every contour seeds its walk from every face an isoline crosses, also on a
-  /// sphere (for comparisons and tests; the output is the same bits). Not to be called while
-  /// other threads use the object.
-  void use_descent_seeds(bool on) { m_descent_seeds = on; }
+
+  /// Scratch memory of one thread's descriptor computations on this object: records of every
+  /// vertex of the mesh (about 64 bytes each) and a fast-marching state. The member functions that
+  /// take a `Workspace` may run concurrently, each thread with its own; those without one share
+  /// a workspace of the object's, one call at a time. Hold one per thread to compute many
+  /// descriptors in parallel (as the batch functions do).
+  /// \code
+  ///   Geodesic_spin_descriptors<Mesh>::Workspace ws(gsd);   // in each thread
+  ///   for(auto v : my_vertices) contours.push_back(gsd.geodesic_spin_contour(v, ws));
+  /// \endcode
+  class Workspace {
+  public:
+    /// A workspace for `gsd`'s descriptors (only: using it with another object throws).
+    explicit Workspace(const Geodesic_spin_descriptors& gsd) : m_owner(&gsd) { gsd.reset(*this); }
+
+  private:
+    friend class Geodesic_spin_descriptors;
+    const Geodesic_spin_descriptors* m_owner;
+    typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
+    Ball ball;
+    internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
+    std::vector<std::uint32_t> faces; // the disc's faces
+    std::vector<float> tf;            // per vertex: the row coordinate t in float (the descent seeds read it)
+  };
 
   /// The geodesic ball of vertex i that the descriptors need (radius L plus the longest edge).
-  void support_ball(std::size_t i, Ball& ball) const { m_engine.distances_within(i, m_ball_radius, ball, state().fmm); }
+  void support_ball(std::size_t i, Ball& ball) const { m_engine.distances_within(i, m_ball_radius, ball); }
+  /// As above, with a workspace of the caller's (concurrent calls with distinct workspaces are safe).
+  void support_ball(std::size_t i, Ball& ball, Workspace& ws) const { m_engine.distances_within(i, m_ball_radius, ball, own(ws).fmm); }
   /// The radius `support_ball` marches to: distances given to the `Ball` overloads must cover it.
   double support_ball_radius() const { return m_ball_radius; }
 
   /// The Geodesic Spin Contour of vertex v.
-  Spin_contour geodesic_spin_contour(vertex_descriptor v) const { return contour_of(m_engine.index(v), state()); }
+  Spin_contour geodesic_spin_contour(vertex_descriptor v, Workspace& ws) const { return contour_of(m_engine.index(v), own(ws)); }
+  /// As above, with the object's shared workspace (one call at a time).
+  Spin_contour geodesic_spin_contour(vertex_descriptor v) const {
+    return with_shared_workspace([&](Workspace& ws) { return geodesic_spin_contour(v, ws); });
+  }
   /// The Geodesic Spin Contour from the geodesic distances of a point to the vertices of
   /// `ball` (for instance a row of an all-pairs matrix; every vertex within
   /// `support_ball_radius()` must be in it, others may be).
-  Spin_contour geodesic_spin_contour(const Ball& ball) const { return contour_from(ball, state()); }
+  Spin_contour geodesic_spin_contour(const Ball& ball, Workspace& ws) const { return contour_from(ball, own(ws)); }
+  /// As above, with the object's shared workspace (one call at a time).
+  Spin_contour geodesic_spin_contour(const Ball& ball) const {
+    return with_shared_workspace([&](Workspace& ws) { return geodesic_spin_contour(ball, ws); });
+  }
   /// The geodesic spin image of vertex v: rows over beta = gd in [0, L] (row 0 at gd = 0),
   /// columns over alpha = agd in [0, alpha_scale()], each vertex of the disc splatted bilinearly
   /// with weight A(Q)/3.
-  Spin_image geodesic_spin_image(vertex_descriptor v) const {
-    Thread_state& st = state();
-    support_ball(m_engine.index(v), st.ball);
-    return image_from(st.ball);
+  Spin_image geodesic_spin_image(vertex_descriptor v, Workspace& ws) const {
+    support_ball(m_engine.index(v), ws.ball, ws);
+    return image_from(ws.ball);
   }
+  /// As above, with the object's shared workspace (one call at a time).
+  Spin_image geodesic_spin_image(vertex_descriptor v) const {
+    return with_shared_workspace([&](Workspace& ws) { return geodesic_spin_image(v, ws); });
+  }
+  /// The geodesic spin image from the distances of a ball (no workspace needed).
   Spin_image geodesic_spin_image(const Ball& ball) const { return image_from(ball); }
 
   /// The contours of many vertices (engine indices) in parallel; `progress(done, total)`.
   std::vector<Spin_contour> geodesic_spin_contours(const std::vector<std::size_t>& indices,
                                                    const std::function<void(std::size_t, std::size_t)>& progress = {}) const {
-    return for_each_index<Spin_contour>(indices, [&](std::size_t i, Thread_state& st) { return contour_of(i, st); }, progress);
+    return for_each_index<Spin_contour>(indices, [&](std::size_t i, Workspace& ws) { return contour_of(i, ws); }, progress);
   }
+  /// The images of many vertices (engine indices) in parallel.
   std::vector<Spin_image> geodesic_spin_images(const std::vector<std::size_t>& indices,
                                                const std::function<void(std::size_t, std::size_t)>& progress = {}) const {
-    return for_each_index<Spin_image>(indices, [&](std::size_t i, Thread_state& st) {
-      support_ball(i, st.ball, st);
-      return image_from(st.ball);
+    return for_each_index<Spin_image>(indices, [&](std::size_t i, Workspace& ws) {
+      support_ball(i, ws.ball, ws);
+      return image_from(ws.ball);
     }, progress);
   }
 
@@ -276,48 +332,39 @@ private:
     const Fast_marching_geodesics<TriangleMesh>* engine;
     friend void put(const Agd_writer& w, vertex_descriptor v, double x) { (*w.agd)[w.engine->index(v)] = x; }
   };
-  // One thread's scratch state (for the object it was last used with).
-  struct Thread_state {
-    std::uint64_t owner = 0;
-    typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
-    Ball ball;
-    internal::Contour_workspace<internal::Geodesic_section::Vertex> cws;
-    std::vector<std::uint32_t> faces; // the disc's faces
-    std::vector<float> tf;            // per vertex: the row coordinate t in float (the descent seeds read it)
-  };
+  friend struct internal::Geodesic_spin_descriptors_access;
   static constexpr std::size_t kOwnedCopy = 8;
-  static std::uint64_t next_id() {
-    static std::atomic<std::uint64_t> counter(0);
-    return ++counter;
-  }
-  // The calling thread's state, reset when it was last used with another object.
-  Thread_state& state() const {
-    thread_local Thread_state st;
-    prepare(st);
-    return st;
-  }
-  void prepare(Thread_state& st) const {
-    if(st.owner == m_id) return;
-    st.owner = m_id;
+  // Sizes a new workspace for this object and puts every vertex outside any ball.
+  void reset(Workspace& ws) const {
     const std::size_t n = number_of_vertices();
-    st.cws.resize(n);
-    st.tf.resize(n);
-    st.faces.assign(m_links.size() + kOwnedCopy, 0u);
-    for(std::size_t v = 0; v < n; ++v) unset(st, v);
+    ws.cws.resize(n);
+    ws.tf.resize(n);
+    ws.faces.assign(m_links.size() + kOwnedCopy, 0u);
+    for(std::size_t v = 0; v < n; ++v) unset(ws, v);
   }
-  void support_ball(std::size_t i, Ball& ball, Thread_state& st) const { m_engine.distances_within(i, m_ball_radius, ball, st.fmm); }
+  Workspace& own(Workspace& ws) const {
+    if(ws.m_owner != this) throw Invalid_argument("geodesic spin descriptors: a workspace of another object");
+    return ws;
+  }
+  // fn(ws) with the object's own workspace, one call at a time.
+  template <typename Fn>
+  decltype(auto) with_shared_workspace(Fn&& fn) const {
+    std::lock_guard<std::mutex> lock(m_shared_mutex);
+    if(!m_shared) m_shared.reset(new Workspace(*this));
+    return fn(*m_shared);
+  }
   // A vertex outside the ball: beyond the last row and every vertex of a ball.
   // (rows: unless the contour left them untouched, as the descent seeds do)
-  void unset(Thread_state& st, std::size_t v, bool rows = true) const {
+  void unset(Workspace& st, std::size_t v, bool rows = true) const {
     st.cws.vx[v] = {0.0, m_outside_t};
     st.tf[v] = static_cast<float>(m_outside_t);
     if(rows) st.cws.rows[v] = {{static_cast<int>(m_rows), static_cast<int>(m_rows)}}; // set_rows of that t
   }
-  Spin_contour contour_of(std::size_t i, Thread_state& st) const {
+  Spin_contour contour_of(std::size_t i, Workspace& st) const {
     support_ball(i, st.ball, st);
     return contour_from(st.ball, st);
   }
-  Spin_contour contour_from(const Ball& ball, Thread_state& st) const {
+  Spin_contour contour_from(const Ball& ball, Workspace& st) const {
     const std::size_t R = m_rows;
     const double inv_h = static_cast<double>(R) / m_support;
     const std::size_t n = number_of_vertices();
@@ -378,8 +425,9 @@ private:
     for(std::size_t i : indices)
       if(i >= number_of_vertices()) throw Invalid_argument("geodesic spin descriptors: vertex index " + std::to_string(i) + " out of range");
     std::vector<Descriptor> out(indices.size());
-    std::vector<Thread_state> states(m_threads);
-    for(auto& st : states) prepare(st);
+    std::vector<Workspace> states;
+    states.reserve(m_threads);
+    for(unsigned t = 0; t < m_threads; ++t) states.emplace_back(*this);
     std::atomic<std::size_t> done(0);
     std::mutex report;
     parallel_for(indices.size(), m_threads, [&](std::size_t k, unsigned tid) {
@@ -394,7 +442,6 @@ private:
   }
 
   Fast_marching_geodesics<TriangleMesh> m_engine;
-  std::uint64_t m_id;
   std::size_t m_rows = 64, m_cols = 64;
   double m_diameter = 0, m_support = 0, m_radius = 0, m_alpha_scale = 0, m_alpha_offset = 0, m_ball_radius = 0, m_outside_t = 0;
   std::vector<double> m_agd, m_vertex_area;
@@ -402,9 +449,11 @@ private:
   std::vector<internal::Half_edge_link> m_half_edges;
   std::vector<std::uint32_t> m_owned_begin, m_owned; // faces by their corner of smallest index
   bool m_sphere = false;       // a topological sphere: the walk can be seeded by descent
-  bool m_descent_seeds = true; // (see use_descent_seeds)
+  bool m_descent_seeds = true; // false: seed from every crossed face also on a sphere (tests compare the two)
   internal::Vertex_stars m_stars; // on a sphere
   unsigned m_threads = 1;
+  mutable std::mutex m_shared_mutex;
+  mutable std::unique_ptr<Workspace> m_shared; // of the calls without a workspace
 };
 
 namespace internal {

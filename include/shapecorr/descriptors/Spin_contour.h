@@ -29,14 +29,18 @@ namespace shapecorr {
 class Spin_contour {
 public:
   Spin_contour() = default;
+  /// An empty contour of `rows` rows (beta of row r: `beta(r)`, from `beta_first` to `beta_last` over the rows).
   explicit Spin_contour(std::size_t rows, double support_length = 1.0, double beta_first = 1.0, double beta_last = -1.0)
     : m_rows(rows), m_support(support_length), m_beta0(beta_first),
       m_step(rows > 0 ? (beta_last - beta_first) / static_cast<double>(rows) : 0.0), m_begin(rows + 1, 0u) {}
 
+  /// Number of rows (beta samples).
   std::size_t rows() const { return m_rows; }
+  /// The support length L the coordinates were divided by (mesh units).
   double support_length() const { return m_support; }
   /// Number of points.
   std::size_t size() const { return m_alpha.size(); }
+  /// Whether the contour has no point.
   bool empty() const { return m_alpha.empty(); }
   /// Normalized beta of row r.
   double beta(std::size_t r) const { return m_beta0 + (static_cast<double>(r) + 0.5) * m_step; }
@@ -44,7 +48,9 @@ public:
   double row_spacing() const { return std::abs(m_step); }
   /// The alphas of row r, ascending: [row_begin(r), row_end(r)) of `alphas()`.
   std::size_t row_begin(std::size_t r) const { return m_begin[r]; }
+  /// End of row r in `alphas()`.
   std::size_t row_end(std::size_t r) const { return m_begin[r + 1]; }
+  /// The alphas of all points, row after row.
   const std::vector<float>& alphas() const { return m_alpha; }
   /// All points as (alpha, beta), rows top to bottom.
   std::vector<std::array<double, 2>> points() const {
@@ -148,6 +154,7 @@ inline double contour_l1_distance(const Spin_contour& X, const Spin_contour& Y,
 /// \ingroup PkgShapeCorrDescriptors
 /// The distance functor of spin contours for the matchers (`contour_l1_distance`).
 struct Contour_l1_distance {
+  /// `contour_l1_distance(a, b)`
   double operator()(const Spin_contour& a, const Spin_contour& b) const { return contour_l1_distance(a, b); }
   /// early-exit form used by `match_descriptors`
   double operator()(const Spin_contour& a, const Spin_contour& b, double bound) const { return contour_l1_distance(a, b, bound); }

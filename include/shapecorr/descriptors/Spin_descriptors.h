@@ -55,13 +55,17 @@ namespace shapecorr {
 template <typename TriangleMesh>
 class Spin_descriptors {
 public:
+  /// The mesh's graph traits.
   typedef boost::graph_traits<TriangleMesh> GT;
+  /// The mesh's vertex type.
   typedef typename GT::vertex_descriptor vertex_descriptor;
+  /// The mesh's face type.
   typedef typename GT::face_descriptor face_descriptor;
   /// A point on a face by barycentric coordinates (CGAL's Polygon Mesh Processing location).
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
   template <typename NamedParameters = parameters::Default_named_parameters>
+  /// Precomputes normals, the centroid and the flat copy of `tm` (named parameters above).
   explicit Spin_descriptors(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
     : m_mesh(tm, np), m_geometry(m_mesh.arrays()) {
     using parameters::choose_parameter;
@@ -94,21 +98,28 @@ public:
     }
   }
 
+  /// The support length L (mesh units).
   double support_length() const { return m_options.support; }
+  /// Number of rows (beta samples).
   std::size_t rows() const { return m_options.rows; }
+  /// Number of columns (alpha samples).
   std::size_t columns() const { return m_options.cols; }
+  /// The default axis of the oriented points.
   Spin_axis axis() const { return m_axis; }
   /// Mean edge length (the thesis's mesh resolution mr).
   double mesh_resolution() const { return m_geometry.mean_edge_length; }
+  /// Diagonal of the axis-aligned bounding box.
   double bounding_box_diagonal() const { return m_geometry.bbox_diagonal; }
   /// Twice the largest distance of a vertex from the area centroid: the default support length.
   double extent() const { return m_geometry.extent; }
   /// The area centroid of the surface (the target of the central point direction).
   Eigen::Vector3d centroid() const { return m_geometry.centroid; }
+  /// The 0-based index of `v`.
   std::size_t index(vertex_descriptor v) const { return m_mesh.index(v); }
 
   /// The oriented point at vertex v with the constructor's axis (or `axis`).
   Oriented_point oriented_point(vertex_descriptor v) const { return oriented_point(v, m_axis); }
+  /// The oriented point at vertex v with axis `axis`.
   Oriented_point oriented_point(vertex_descriptor v, Spin_axis axis) const {
     const std::size_t i = m_mesh.index(v);
     Oriented_point op;
@@ -118,6 +129,7 @@ public:
   }
   /// The oriented point at a surface point; NORMAL is the normal of its face.
   Oriented_point oriented_point(const Face_location& loc) const { return oriented_point(loc, m_axis); }
+  /// The oriented point at a surface point with axis `axis`.
   Oriented_point oriented_point(const Face_location& loc, Spin_axis axis) const {
     const std::size_t f = face_row(loc.first);
     Oriented_point op;

@@ -16,23 +16,30 @@
 namespace shapecorr {
 
 /// \ingroup PkgShapeCorrDescriptors
-/// A spin image: `rows x cols` bins over the spin coordinates of an oriented point (P, n),
+/// A spin image: `rows x columns` bins over the spin coordinates of an oriented point (P, n),
 /// alpha (distance to the axis) in [0, L] along the columns (column 0 at alpha = 0) and beta
 /// (signed height above the tangent plane) in [-L, L] along the rows (row 0 at beta = +L), L the
-/// support length. Bin c of a row covers alpha in [c, c+1] L / cols, row r covers beta in
+/// support length. Bin c of a row covers alpha in [c, c+1] L / columns, row r covers beta in
 /// [L - (r+1) 2L/rows, L - r 2L/rows]. Values are vertex counts (spin image) or areas (face-based).
 class Spin_image {
 public:
   Spin_image() = default;
-  Spin_image(std::size_t rows, std::size_t cols, double support_length)
-    : m_rows(rows), m_cols(cols), m_support(support_length), m_values(rows * cols, 0.0f) {}
+  /// An image of zeros.
+  Spin_image(std::size_t rows, std::size_t columns, double support_length)
+    : m_rows(rows), m_cols(columns), m_support(support_length), m_values(rows * columns, 0.0f) {}
+  /// Number of rows (beta bins).
   std::size_t rows() const { return m_rows; }
-  std::size_t cols() const { return m_cols; }
+  /// Number of columns (alpha bins).
+  std::size_t columns() const { return m_cols; }
+  /// The support length L (mesh units).
   double support_length() const { return m_support; }
+  /// Bin (r, c).
   float& at(std::size_t r, std::size_t c) { return m_values[r * m_cols + c]; }
+  /// Bin (r, c).
   float at(std::size_t r, std::size_t c) const { return m_values[r * m_cols + c]; }
   /// The bins, row-major.
   const std::vector<float>& values() const { return m_values; }
+  /// The bins, row-major (writable).
   std::vector<float>& values() { return m_values; }
 
 private:
@@ -47,10 +54,10 @@ private:
 /// side is constant on the overlap.
 /// \throws Invalid_argument when the sizes differ
 inline std::pair<double, std::size_t> spin_image_correlation(const Spin_image& a, const Spin_image& b) {
-  if(a.rows() != b.rows() || a.cols() != b.cols())
+  if(a.rows() != b.rows() || a.columns() != b.columns())
     throw Invalid_argument("spin image comparison: sizes differ (" + std::to_string(a.rows()) + "x" +
-                                                           std::to_string(a.cols()) + " vs " + std::to_string(b.rows()) + "x" +
-                                                           std::to_string(b.cols()) + ")");
+                                                           std::to_string(a.columns()) + " vs " + std::to_string(b.rows()) + "x" +
+                                                           std::to_string(b.columns()) + ")");
   const float* p = a.values().data();
   const float* q = b.values().data();
   const std::size_t m = a.values().size();
@@ -91,6 +98,7 @@ inline double spin_image_similarity(const Spin_image& a, const Spin_image& b, do
 /// images), R from `spin_image_correlation`. Ranking by it equals ranking by Johnson & Hebert's
 /// correlation; use `spin_image_similarity` for their overlap-penalized measure.
 struct Spin_image_distance {
+  /// The distance of two images (see the struct).
   double operator()(const Spin_image& a, const Spin_image& b) const { return 1.0 - spin_image_correlation(a, b).first; }
 };
 

@@ -25,22 +25,27 @@ namespace shapecorr {
 /// \ingroup PkgShapeCorrEvaluation
 /// Hit rate and average geodesic error of a descriptor as functions of k = 1..N.
 struct Ranking_curves {
-  std::size_t number_of_sources = 0;
+  std::size_t number_of_sources = 0; ///< source points ranked
   std::size_t number_of_targets = 0; ///< N
   /// hit_rate[k-1]: fraction of source points whose true match is among their k nearest targets
   std::vector<double> hit_rate;
   /// geodesic_error[k-1]: mean over source points of the mean geodesic distance (on the target,
   /// divided by the normalization, e.g. sqrt(area)) from their k nearest targets to the true match
   std::vector<double> geodesic_error;
-  /// The same, counting the symmetric counterpart of the true match as correct (empty unless a
-  /// symmetric ground truth was given)
-  std::vector<double> hit_rate_symmetric, geodesic_error_symmetric;
+  /// The hit rate counting the symmetric counterpart of the true match as correct too (empty
+  /// unless a symmetric ground truth was given)
+  std::vector<double> hit_rate_symmetric;
+  /// The geodesic error to the nearer of the true match and its symmetric counterpart (empty
+  /// unless a symmetric ground truth was given)
+  std::vector<double> geodesic_error_symmetric;
   /// The k of a percentage of the targets: max(1, round(percent N / 100)).
   std::size_t k_of_percent(double percent) const {
     const double k = std::round(percent * static_cast<double>(number_of_targets) / 100.0);
     return std::min(number_of_targets, std::max<std::size_t>(1, static_cast<std::size_t>(std::max(0.0, k))));
   }
+  /// The hit rate at k = percent % of the target vertices.
   double hit_rate_at_percent(double percent) const { return hit_rate[k_of_percent(percent) - 1]; }
+  /// The mean geodesic error at k = percent % of the target vertices.
   double geodesic_error_at_percent(double percent) const { return geodesic_error[k_of_percent(percent) - 1]; }
 };
 

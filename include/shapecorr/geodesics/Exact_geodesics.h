@@ -38,17 +38,28 @@ template <typename TriangleMesh,
           typename VertexPointMap = typename CGAL::GetVertexPointMap<TriangleMesh>::const_type>
 class Exact_geodesics {
 public:
+  /// The mesh's vertex type.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The vertex point map type.
   typedef VertexPointMap Vpm;
+  /// The point type.
   typedef typename boost::property_traits<Vpm>::value_type Point;
+  /// The kernel of the points.
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  /// CGAL's shortest path traits.
   typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, TriangleMesh> Traits;
+  /// Index maps of CGAL's shortest path object.
   typedef decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>())) VIM;
+  /// (halfedges)
   typedef decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const TriangleMesh&>())) HIM;
+  /// (faces)
   typedef decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>())) FIM;
+  /// CGAL's shortest path object, one per query.
   typedef CGAL::Surface_mesh_shortest_path<Traits, VIM, HIM, FIM, Vpm> Shortest_path;
+  /// Progress callback `f(done, total)` of batch queries.
   typedef std::function<void(std::size_t, std::size_t)> Progress;
 
+  /// \param tm the triangle mesh; it must outlive this object and stay unchanged
   /// \param np `vertex_point_map` (of type `VertexPointMap`), `vertex_index_map` (0-based vertex
   /// indices), `number_of_threads` (0 = all cores).
   template <typename NamedParameters = parameters::Default_named_parameters>
@@ -63,13 +74,20 @@ public:
     m_components = internal::vertex_components(m_mesh.number_of_vertices(), m_mesh.arrays().F, m_component);
   }
 
+  /// n: vertex indices run over [0, n).
   std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
+  /// The 0-based index of `v` (the vertex index map fixed at construction).
   std::size_t index(vertex_descriptor v) const { return m_mesh.index(v); }
+  /// The vertex of index `i`.
   vertex_descriptor vertex(std::size_t i) const { return m_mesh.vertex(i); }
+  /// The mesh the engine was built on.
   const TriangleMesh& mesh() const { return m_tm; }
+  /// Positions and triangles in index order (the flat copy the engine works on).
   const internal::Triangle_arrays& arrays() const { return m_mesh.arrays(); }
+  /// Threads of batch queries.
   unsigned number_of_threads() const { return m_threads; }
 
+  /// Distance of every vertex (by index) to the nearest of `sources` (indices); `+infinity` in components without a source. \throws Invalid_argument for no source or an index out of range
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
     if(sources.empty()) throw Invalid_argument("exact geodesics: no source vertex given");
     Shortest_path sp(m_tm, m_vim, m_him, m_fim, m_vpm);
@@ -90,6 +108,7 @@ public:
     for(std::size_t s : sources) d[static_cast<Eigen::Index>(s)] = 0.0;
     return d;
   }
+  /// Distance of every vertex (by index) to vertex `source`.
   Eigen::VectorXd distances_from(std::size_t source) const { return distances_to_set({source}); }
 
   /// As `Heat_method_geodesics::for_each_batch` (batches of one source each).
@@ -99,7 +118,8 @@ public:
   }
 
   template <typename VertexRange, typename VertexDistanceMap>
-  void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
+  /// Distance of every vertex to the nearest vertex of `sources` (`vertex_descriptor`s), written into `distance_map` (a `WritablePropertyMap<vertex_descriptor, double>`).
+  void compute_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
     internal::write_distances_to_set(*this, sources, distance_map);
   }
 

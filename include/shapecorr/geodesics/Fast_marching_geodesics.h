@@ -34,12 +34,15 @@ namespace shapecorr {
 template <typename TriangleMesh>
 class Fast_marching_geodesics {
 public:
+  /// The mesh's vertex type.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// Progress callback `f(done, total)` of batch queries.
   typedef std::function<void(std::size_t, std::size_t)> Progress;
   /// (vertex index, distance) pairs, in the order the march accepted them: nearly increasing
   /// distances (see `march`).
   typedef std::vector<std::pair<std::size_t, double>> Ball;
 
+  /// \param tm the triangle mesh; it must outlive this object and stay unchanged
   /// \param np `vertex_point_map`, `vertex_index_map`, `number_of_threads` (0 = all cores).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Fast_marching_geodesics(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
@@ -49,11 +52,17 @@ public:
     m_threads = resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));
   }
 
+  /// n: vertex indices run over [0, n).
   std::size_t number_of_vertices() const { return m_mesh.number_of_vertices(); }
+  /// The 0-based index of `v` (the vertex index map fixed at construction).
   std::size_t index(vertex_descriptor v) const { return m_mesh.index(v); }
+  /// The vertex of index `i`.
   vertex_descriptor vertex(std::size_t i) const { return m_mesh.vertex(i); }
+  /// The mesh the engine was built on.
   const TriangleMesh& mesh() const { return m_mesh.mesh(); }
+  /// Positions and triangles in index order (the flat copy the engine works on).
   const internal::Triangle_arrays& arrays() const { return m_mesh.arrays(); }
+  /// Threads of batch queries.
   unsigned number_of_threads() const { return m_threads; }
 
   /// Vertices at geodesic distance at most `radius` from `source` (indices), with their distances
@@ -69,6 +78,7 @@ public:
   }
   /// Scratch state of one thread's queries; make one per thread to query concurrently.
   typedef internal::Fast_marching_engine::Workspace Workspace;
+  /// As above, with the calling thread's own workspace: concurrent calls with distinct workspaces are safe.
   void distances_within(std::size_t source, double radius, Ball& out, Workspace& ws) const {
     if(!(radius >= 0))
       throw Invalid_argument("radius-limited geodesics: the radius must be >= 0");
@@ -85,11 +95,13 @@ public:
     m_engine.march(sources, radius, ws, std::forward<Visit>(visit));
   }
 
+  /// Distance of every vertex (by index) to the nearest of `sources` (indices); `+infinity` in components without a source. \throws Invalid_argument for no source or an index out of range
   Eigen::VectorXd distances_to_set(const std::vector<std::size_t>& sources) const {
     if(sources.empty()) throw Invalid_argument("fast marching: no source vertex given");
     Workspace ws;
     return full(sources, ws);
   }
+  /// Distance of every vertex (by index) to vertex `source`.
   Eigen::VectorXd distances_from(std::size_t source) const { return distances_to_set({source}); }
 
   /// As `Heat_method_geodesics::for_each_batch` (batches of one source, in parallel).
@@ -100,7 +112,8 @@ public:
   }
 
   template <typename VertexRange, typename VertexDistanceMap>
-  void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
+  /// Distance of every vertex to the nearest vertex of `sources` (`vertex_descriptor`s), written into `distance_map` (a `WritablePropertyMap<vertex_descriptor, double>`).
+  void compute_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
     internal::write_distances_to_set(*this, sources, distance_map);
   }
 

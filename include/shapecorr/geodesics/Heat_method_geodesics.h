@@ -34,7 +34,9 @@ namespace shapecorr {
 template <typename TriangleMesh, typename SparseSolver = Default_sparse_spd_solver>
 class Heat_method_geodesics {
 public:
+  /// The mesh's vertex type.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// Progress callback `f(done, total)` of batch queries.
   typedef std::function<void(std::size_t, std::size_t)> Progress;
 
   /// Precomputes the operators and (lazily, per thread) their factorizations.
@@ -101,7 +103,8 @@ public:
   /// \tparam VertexRange a range of `vertex_descriptor`
   /// \tparam VertexDistanceMap a `WritablePropertyMap<vertex_descriptor, double>`
   template <typename VertexRange, typename VertexDistanceMap>
-  void estimate_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
+  /// Distance of every vertex to the nearest vertex of `sources` (`vertex_descriptor`s), written into `distance_map` (a `WritablePropertyMap<vertex_descriptor, double>`).
+  void compute_geodesic_distances(const VertexRange& sources, VertexDistanceMap distance_map) const {
     internal::write_distances_to_set(*this, sources, distance_map);
   }
 

@@ -26,14 +26,18 @@ namespace shapecorr {
 /// sweep reaches first. The diagonal is 0. Unreachable pairs (different components) hold `+infinity`.
 class Geodesic_distance_matrix {
 public:
+  /// Row-major n x n float matrix.
   typedef Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Matrix;
   Geodesic_distance_matrix() = default;
+  /// Takes ownership of `m`.
   explicit Geodesic_distance_matrix(Matrix m) : m_d(std::move(m)) {}
+  /// n, the number of vertices.
   std::size_t size() const { return static_cast<std::size_t>(m_d.rows()); }
   /// Distance between vertices i and j (0-based indices of the engine's vertex index map).
   float operator()(std::size_t i, std::size_t j) const { return m_d(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)); }
   /// Row i: the distances from vertex i to every vertex.
   auto row(std::size_t i) const { return m_d.row(static_cast<Eigen::Index>(i)); }
+  /// The matrix itself: entry (i, j) is the distance between vertices i and j.
   const Matrix& matrix() const { return m_d; }
   /// Largest finite entry: the geodesic diameter D of the mesh.
   double diameter() const {

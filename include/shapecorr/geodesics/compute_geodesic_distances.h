@@ -33,7 +33,7 @@ void compute_geodesic_distances(const TriangleMesh& tm, const VertexRange& sourc
     compute_geodesic_distances(tm, one, distance_map, np);
   } else {
     with_geodesic_engine(tm, np, [&](const auto& engine) {
-      engine.estimate_geodesic_distances(sources, distance_map);
+      engine.compute_geodesic_distances(sources, distance_map);
       return 0;
     });
   }

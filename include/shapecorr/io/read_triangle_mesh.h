@@ -31,6 +31,7 @@ struct Read_options {
 };
 
 /// \ingroup PkgShapeCorrIO
+/// What `read_triangle_mesh` found in the file and what it repaired.
 struct Read_result {
   Mesh_report report;                ///< validation of the file's content as read, before repairs
   std::vector<std::string> repairs;  ///< the repairs applied, in words

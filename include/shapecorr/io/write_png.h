@@ -18,13 +18,16 @@ namespace shapecorr {
 /// \ingroup PkgShapeCorrIO
 /// An RGB picture, row-major, row 0 on top.
 struct Rgb_picture {
-  std::size_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgb; // 3 bytes per pixel
+  std::size_t width = 0;         ///< pixels per row
+  std::size_t height = 0;        ///< rows
+  std::vector<std::uint8_t> rgb; ///< 3 bytes (red, green, blue) per pixel, row-major
   Rgb_picture() = default;
+  /// A w x h picture filled with `fill`.
   Rgb_picture(std::size_t w, std::size_t h, std::array<std::uint8_t, 3> fill = {{255, 255, 255}}) : width(w), height(h), rgb(3 * w * h) {
     for(std::size_t i = 0; i < w * h; ++i)
       for(int c = 0; c < 3; ++c) rgb[3 * i + static_cast<std::size_t>(c)] = fill[static_cast<std::size_t>(c)];
   }
+  /// Sets pixel (x, y) (x to the right, y downwards) to colour c; ignored outside the picture.
   void set(std::size_t x, std::size_t y, std::array<std::uint8_t, 3> c) {
     if(x >= width || y >= height) return;
     for(int k = 0; k < 3; ++k) rgb[3 * (y * width + x) + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];

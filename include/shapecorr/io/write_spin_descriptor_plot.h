@@ -24,7 +24,7 @@ namespace shapecorr {
 /// stays blank); when both are given they must have the same number of rows.
 inline Rgb_picture spin_descriptor_picture(const Spin_image& img, const Spin_contour& contour, std::size_t scale = 4) {
   const std::size_t rows = img.rows() ? img.rows() : contour.rows();
-  const std::size_t cols = img.cols() ? img.cols() : std::max<std::size_t>(1, rows / 2);
+  const std::size_t cols = img.columns() ? img.columns() : std::max<std::size_t>(1, rows / 2);
   if(rows == 0) throw Invalid_argument("spin descriptor picture: nothing to draw");
   if(img.rows() && contour.rows() && img.rows() != contour.rows())
     throw Invalid_argument("spin descriptor picture: image and contour have different numbers of rows");

@@ -27,19 +27,24 @@ namespace shapecorr {
 /// What `validate_polygon_soup()` / `validate_mesh()` found. Counts, plus for each defect the
 /// first few places (vertex or face indices, 0-based) in `examples`.
 struct Mesh_report {
-  std::size_t number_of_vertices = 0, number_of_faces = 0;
-  std::size_t non_triangle_faces = 0;
-  std::size_t non_finite_vertices = 0;
+  std::size_t number_of_vertices = 0;    ///< vertices in the input
+  std::size_t number_of_faces = 0;       ///< faces in the input
+  std::size_t non_triangle_faces = 0;    ///< faces with other than three vertices
+  std::size_t non_finite_vertices = 0;   ///< vertices with a NaN or infinite coordinate
   std::size_t degenerate_faces = 0;       ///< repeated vertex or area <= 1e-14 * bbox diagonal^2
   std::size_t non_manifold_edges = 0;     ///< edges with > 2 faces or two faces of equal orientation
   std::size_t non_manifold_vertices = 0;  ///< vertices whose faces form several fans
-  std::size_t isolated_vertices = 0;
-  std::size_t boundary_edges = 0;
+  std::size_t isolated_vertices = 0;     ///< vertices used by no face
+  std::size_t boundary_edges = 0;        ///< edges with one face
   std::size_t connected_components = 0;   ///< of the faces (isolated vertices not counted)
-  double area = 0, mean_edge_length = 0, bbox_diagonal = 0;
+  double area = 0;                       ///< total area of the triangles
+  double mean_edge_length = 0;           ///< mean length of the edges
+  double bbox_diagonal = 0;              ///< diagonal of the axis-aligned bounding box
   std::map<Mesh_defect, std::string> examples; ///< "face 12 (vertices 3, 3, 7)", ...
 
+  /// No vertex or no face.
   bool is_empty() const { return number_of_vertices == 0 || number_of_faces == 0; }
+  /// No boundary edge.
   bool is_closed() const { return boundary_edges == 0; }
   /// True when the surface is a usable triangle mesh: nonempty, triangles only, finite
   /// coordinates, no degenerate face, manifold, no isolated vertex. Boundaries and several

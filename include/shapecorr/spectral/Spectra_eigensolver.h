@@ -58,6 +58,9 @@ struct Spectra_eigensolver {
   double subspace_factor = 2.0;      ///< Lanczos subspace size ncv = subspace_factor * nev + 1 per run
   std::size_t slice_size = 100;      ///< eigenpairs per shift-invert run (spectrum slicing)
 
+  /// The k smallest eigenpairs of `L phi = lambda diag(mass) phi` (the `LaplaceBeltramiEigensolver`
+  /// concept, doc/concepts.md): eigenvalues ascending into `values`, M-orthonormal eigenvectors
+  /// as the columns of `vectors`. \throws Solver_failure when it cannot deliver k accurate pairs
   void solve(const Eigen::SparseMatrix<double>& L, const Eigen::VectorXd& mass, std::size_t k,
              Eigen::VectorXd& values, Eigen::MatrixXd& vectors) const {
     const Eigen::Index n = L.rows();

@@ -539,53 +539,54 @@ void seed_rows_by_faces(const int* F, std::size_t R, FaceVisitor&& for_each_face
   group_by_row(ws.face_rows.data(), n_rows, R, ws.count, ws.next, ws.bucket);
 }
 
-/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`) from the walk's seeds in
-/// `ws.bucket` / `ws.count` (by `seed_rows_by_faces`, or any set of faces that meets every
-/// connected piece of every row's level set, grouped by row the same way). The section policy
-/// `S` gives the per-vertex record `S::Vertex`, the point type on a level line `S::Point`,
-/// `S::cross(a, b, sa, sb)` (the point where t crosses the level on the edge a b, sa and sb the
-/// offsets of a.t and b.t from it, of opposite signs), `S::at(a)`, `s.segment(p, q, l, u)` (the
-/// alpha range, possibly in squared units, of a segment of a level line), `s.polygon(points, n,
-/// in_plane, l, u)` (the same for a face with corners on the line: n points, or the whole
-/// triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range; false drops it),
-/// `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`. Alpha is sampled on `cols`
-/// columns over [0, alpha_scale] for the closing samples and stored divided by `alpha_scale`;
-/// `out` must have R rows.
+/// Walks the level sets t = r of the rows r = 0..R-1 (vertex records in `ws.vx`) from the seeds in
+/// `ws.bucket` / `ws.count` (by `seed_rows_by_faces` or `seed_rows_by_descent`: any set of faces
+/// that meets every connected piece of every row's level set, grouped by row), and records the
+/// alpha interval of each connected piece in `ws.entries`.
+///
+/// Along a connected curve alpha takes every value between its extremes, so a piece contributes
+/// one interval [min, max] and the union of a row needs no sorting of per-face intervals. In the
+/// common case (no corner on the line) a face has exactly two crossing edges, so a piece is
+/// walked as two *chains* out of its seed face, each carrying the crossing on its shared edge:
+/// one interpolation per face. Faces with a corner on the line go through the general code
+/// (`open`). Rows are walked two at a time, each with its own face stamps (a face may meet both),
+/// so that four chains run interleaved and their dependent loads overlap.
+///
+/// The section policy `S` gives the per-vertex record `S::Vertex`, the point type on a level line
+/// `S::Point`, `S::cross(a, b, sa, sb)` (the point where t crosses the level on the edge a b, sa
+/// and sb the offsets of a.t and b.t from it, of opposite signs), `S::at(a)`, `s.segment(p, q, l,
+/// u)` (the alpha range, possibly in squared units, of a segment of a level line),
+/// `s.polygon(points, n, in_plane, l, u)` (the same for a face with corners on the line: n
+/// points, or the whole triangle when `in_plane`), `s.keep(l, u)` (clips a piece's range; false
+/// drops it), `s.finish(x)` (from the range's units to alpha) and `s.merge_eps`.
 template <typename S>
-void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
-                     Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+class Level_set_walker {
+public:
   typedef typename S::Vertex V;
   typedef typename S::Point P;
-  const std::size_t m = links.size();
-  ws.entries.clear();
-  if(ws.stamp.size() != 2 * (m + 1) || ws.epoch > 0xFFFFFFFFu - R) {
-    ws.stamp.assign(2 * (m + 1), 0);
-    ws.epoch = 0;
+
+  Level_set_walker(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const S& s, Contour_workspace<V>& ws)
+    : m_links(links), m_he(half_edges.data()), m_vx(ws.vx.data()), m_faces(links.size()), m_s(s), m_ws(ws) {
+    ws.entries.clear();
   }
-  // The section of face f with line t (see level_line_section).
-  auto section = [&](std::size_t f, double t, double& l, double& u) -> int {
-    const V* w[3] = {&ws.vx[static_cast<std::size_t>(links[f].v[0])], &ws.vx[static_cast<std::size_t>(links[f].v[1])],
-                     &ws.vx[static_cast<std::size_t>(links[f].v[2])]};
-    return level_line_section(s, w, t, l, u);
-  };
-  // 2. Per row, walk each connected piece of the section across shared edges: along a connected
-  //    curve alpha takes every value between its extremes, so a piece contributes one interval
-  //    [min l, max u] and the union needs no sorting of per-face intervals.
-  //    In the common case (no corner on the line) a face has exactly two crossing edges, so the
-  //    walk follows the section as a chain, carrying the point on the shared edge: one
-  //    interpolation per face. Faces with a corner on the line go through the general code.
-  auto edge_point = [&](std::size_t f, int k, double t) {
-    return level_line_point<S>(ws.vx[static_cast<std::size_t>(links[f].v[k])], ws.vx[static_cast<std::size_t>(links[f].v[(k + 1) % 3])], t);
-  };
-  const V* vx = ws.vx.data();
-  const Half_edge_link* he = half_edges.data();
-  // Rows are walked two at a time (r, r + 1), each with its own stamps (a face may meet both), so
-  // that four chains run interleaved.
+
+  /// Walks every row of [0, R).
+  void walk(std::size_t R) {
+    if(m_ws.stamp.size() != 2 * (m_faces + 1) || m_ws.epoch > 0xFFFFFFFFu - R) {
+      m_ws.stamp.assign(2 * (m_faces + 1), 0);
+      m_ws.epoch = 0;
+    }
+    for(std::size_t r0 = 0; r0 < R; r0 += 2) walk_row_pair(r0, r0 + 1 < R ? 2 : 1);
+  }
+
+private:
+  // One row's walk: its line, its stamps and the seeds still to try.
   struct Row {
     double t;
-    std::uint32_t key;
-    std::uint32_t* stamp; // stamp[-1]: beyond a boundary
-    std::vector<std::uint32_t>* stack;
+    std::uint32_t r;      // the row
+    std::uint32_t key;    // the stamp of faces this row's walk visited
+    std::uint32_t* stamp; // per face; stamp[-1]: beyond a boundary
+    std::vector<std::uint32_t>* stack; // faces with a corner on the line, for the general code
     std::uint32_t next, end; // the row's seeds still to try: bucket[next, end)
     double lmin, umax;       // the range of the current piece
   };
@@ -601,14 +602,136 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
     P pt, first;
     double lo, hi; // the range of the points it passed (empty until it moves)
   };
+
+  // Rows r0 and r0 + 1 (`nr` = 2), or r0 alone (1): pieces of both rows with two chains each,
+  // stepped together while both rows have pieces; then the rest of each row.
+  void walk_row_pair(std::size_t r0, std::size_t nr) {
+    Row rows[2];
+    for(std::size_t j = 0; j < nr; ++j) {
+      Row& w = rows[j];
+      w.t = static_cast<double>(r0 + j);
+      w.r = static_cast<std::uint32_t>(r0 + j);
+      w.key = ++m_ws.epoch;
+      w.stamp = m_ws.stamp.data() + 1 + j * (m_faces + 1);
+      w.stamp[-1] = w.key;
+      w.stack = j == 0 ? &m_ws.stack : &m_ws.stack2;
+      w.stack->clear();
+      w.next = m_ws.count[r0 + j];
+      w.end = m_ws.count[r0 + j + 1];
+    }
+    Chain a[3], b[3];
+    bool more_a = next_piece(rows[0], a), more_b = nr == 2 && next_piece(rows[1], b);
+    while(more_a && more_b) {
+      // four chains interleaved; the two of a closed piece meet half-way
+      Chain a0 = a[0], a1 = a[1], b0 = b[0], b1 = b[1]; // (local copies: kept in registers)
+      bool ga0 = true, ga1 = true, gb0 = true, gb1 = true;
+      while(ga0 && ga1 && gb0 && gb1) {
+        ga0 = step(rows[0], a0);
+        ga1 = step(rows[0], a1);
+        gb0 = step(rows[1], b0);
+        gb1 = step(rows[1], b1);
+      }
+      if(!ga0 || !ga1) { // piece a is done or nearly: finish it, go on with b
+        drain(rows[0], a0, a1, ga0, ga1, a);
+        if(!gb0 || !gb1) { // b as well
+          drain(rows[1], b0, b1, gb0, gb1, b);
+          more_b = next_piece(rows[1], b);
+        } else { // b continues: its chains resume with the next piece of a
+          b[0] = b0;
+          b[1] = b1;
+        }
+        more_a = next_piece(rows[0], a);
+      } else { // piece b is done or nearly
+        drain(rows[1], b0, b1, gb0, gb1, b);
+        a[0] = a0;
+        a[1] = a1;
+        more_b = next_piece(rows[1], b);
+      }
+    }
+    walk_rest_of_row(rows[0], a, more_a);
+    if(nr == 2) walk_rest_of_row(rows[1], b, more_b);
+  }
+
+  // The remaining pieces of one row, their two chains interleaved.
+  void walk_rest_of_row(Row& w, Chain* ch, bool more) {
+    for(; more; more = next_piece(w, ch)) {
+      Chain c0 = ch[0], c1 = ch[1];
+      bool g0 = true, g1 = true;
+      while(g0 && g1) {
+        g0 = step(w, c0);
+        g1 = step(w, c1);
+      }
+      drain(w, c0, c1, g0, g1, ch);
+    }
+  }
+
+  // The next piece of row w whose seed face has two chains out of it (the common case), started
+  // in ch; pieces of the general kind met on the way are walked on the spot. False: no more.
+  bool next_piece(Row& w, Chain* ch) {
+    while(w.next < w.end) {
+      const std::uint32_t f0 = m_ws.bucket[w.next++];
+      if(w.stamp[f0] == w.key) continue;
+      w.stamp[f0] = w.key;
+      w.lmin = std::numeric_limits<double>::infinity();
+      w.umax = -std::numeric_limits<double>::infinity();
+      int n = 0;
+      open(w, f0, ch, n);
+      if(n == 2 && w.stack->empty()) return true;
+      finish_piece(w, ch, n);
+    }
+    return false;
+  }
+
+  // The two chains of a piece, one of them stopped or both: the rest one at a time, then the
+  // rest of the piece.
+  void drain(Row& w, Chain& c0, Chain& c1, bool g0, bool g1, Chain* ch) {
+    while(g0) g0 = step(w, c0);
+    while(g1) g1 = step(w, c1);
+    close(w, c0);
+    close(w, c1);
+    finish_piece(w, ch, 0);
+  }
+
+  // The rest of a piece, one chain at a time: the `n` chains started in ch, then the faces with a
+  // corner on the line (the general code) and the chains out of them; then the piece's interval.
+  void finish_piece(Row& w, Chain* ch, int n) {
+    for(;;) {
+      for(int i = 0; i < n; ++i) {
+        while(step(w, ch[i])) {
+        }
+        close(w, ch[i]);
+      }
+      n = 0;
+      if(w.stack->empty()) break;
+      const std::uint32_t f = w.stack->back();
+      w.stack->pop_back();
+      open(w, f, ch, n);
+    }
+    if(w.lmin <= w.umax && m_s.keep(w.lmin, w.umax)) m_ws.entries.push_back({w.r, {w.lmin, w.umax}});
+  }
+
+  // The section of face f: its range joins the piece's, and the chains out of it are started in
+  // ch (n of them; false: none).
+  bool open(Row& w, std::uint32_t f, Chain* ch, int& n) {
+    double l, u;
+    const V* corner[3] = {corner_record(f, 0), corner_record(f, 1), corner_record(f, 2)};
+    const int edges = level_line_section(m_s, corner, w.t, l, u);
+    n = 0;
+    if(!edges) return false;
+    w.lmin = std::min(w.lmin, l);
+    w.umax = std::max(w.umax, u);
+    for(int k = 0; k < 3; ++k)
+      if(edges >> k & 1 && start(w, f, k, level_line_point<S>(*corner_record(f, k), *corner_record(f, (k + 1) % 3), w.t), ch[n])) ++n;
+    return n > 0;
+  }
+
   // Starts a chain out of face p through its edge k_out, whose point on the line is pt; false
   // when the next face has a corner on the line (pushed for the general code).
-  auto start = [&](Row& w, std::uint32_t p, int k_out, P pt, Chain& c) -> bool {
-    const Face_link& from = links[p];
+  bool start(Row& w, std::uint32_t p, int k_out, P pt, Chain& c) {
     bool same_way;
-    c.h = twin_half_edge(links, p, k_out, same_way);
-    c.x = &vx[static_cast<std::size_t>(from.v[k_out == 2 ? 0 : k_out + 1])]; // h's origin, unless same_way
-    c.y = &vx[static_cast<std::size_t>(from.v[k_out])];
+    c.h = twin_half_edge(m_links, p, k_out, same_way);
+    c.x = corner_record(p, k_out == 2 ? 0 : k_out + 1); // h's origin, unless same_way
+    c.y = corner_record(p, k_out);
     if(same_way) std::swap(c.x, c.y);
     const double sx = c.x->t - w.t, sy = c.y->t - w.t;
     c.x_above = sx > 0 ? 1 : 0;
@@ -624,14 +747,16 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
       return false;
     }
     return true;
-  };
-  // One step of a chain into the face its half-edge h enters; false when it stops there.
-  auto step = [&](Row& w, Chain& c) -> bool {
+  }
+
+  // One step of a chain into the face its half-edge h enters; false when it stops there (a face
+  // visited already, a boundary, or a corner on the line, left to the general code).
+  bool step(Row& w, Chain& c) const {
     const std::int32_t f = c.h >> 2; // -1 beyond a boundary, whose stamp is the key
     if(w.stamp[f] == w.key) return false;
     w.stamp[f] = w.key;
-    const Half_edge_link& e = he[c.h];
-    const V* o = &vx[static_cast<std::size_t>(e.opposite)];
+    const Half_edge_link& e = m_he[c.h];
+    const V* o = &m_vx[static_cast<std::size_t>(e.opposite)];
     const double so = o->t - w.t;
     if(so == 0) { // a corner on the line: general code
       w.stack->push_back(static_cast<std::uint32_t>(f));
@@ -650,7 +775,7 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
       c.hi = std::max(c.hi, q);
     } else {
       double l, u;
-      s.segment(c.pt, q, l, u);
+      m_s.segment(c.pt, q, l, u);
       c.lo = std::min(c.lo, l);
       c.hi = std::max(c.hi, u);
     }
@@ -667,8 +792,10 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
     }
     if constexpr(!S::linear) c.pt = q; // (the linear policy needs the end points only)
     return true;
-  };
-  auto close = [&](Row& w, const Chain& c) {
+  }
+
+  // A stopped chain's range joins its piece's.
+  static void close(Row& w, const Chain& c) {
     w.lmin = std::min(w.lmin, c.lo);
     w.umax = std::max(w.umax, c.hi);
     if constexpr(S::linear) { // the first point, left out of the steps
@@ -677,122 +804,26 @@ void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half
         w.umax = std::max(w.umax, c.first);
       }
     }
-  };
-  // The section of face f: its range, and the chains out of it (false: none to start).
-  auto open = [&](Row& w, std::uint32_t f, Chain* ch, int& n) -> bool {
-    double l, u;
-    const int edges = section(f, w.t, l, u);
-    n = 0;
-    if(!edges) return false;
-    w.lmin = std::min(w.lmin, l);
-    w.umax = std::max(w.umax, u);
-    for(int k = 0; k < 3; ++k)
-      if(edges >> k & 1 && start(w, f, k, edge_point(f, k, w.t), ch[n])) ++n;
-    return n > 0;
-  };
-  // The rest of a piece, one chain at a time: the chains started, then the faces with a corner on
-  // the line (the general code) and the chains out of them; then the piece's interval.
-  auto finish_piece = [&](Row& w, std::uint32_t r, Chain* ch, int n) {
-    for(;;) {
-      for(int i = 0; i < n; ++i) {
-        while(step(w, ch[i])) {
-        }
-        close(w, ch[i]);
-      }
-      n = 0;
-      if(w.stack->empty()) break;
-      const std::uint32_t f = w.stack->back();
-      w.stack->pop_back();
-      open(w, f, ch, n);
-    }
-    if(w.lmin <= w.umax && s.keep(w.lmin, w.umax)) ws.entries.push_back({r, {w.lmin, w.umax}});
-  };
-  // The next piece of row w whose seed face has two chains out of it (the common case), started
-  // in ch; pieces of the general kind met on the way are walked on the spot. False: no more.
-  auto next_piece = [&](Row& w, std::uint32_t r, Chain* ch) -> bool {
-    while(w.next < w.end) {
-      const std::uint32_t f0 = ws.bucket[w.next++];
-      if(w.stamp[f0] == w.key) continue;
-      w.stamp[f0] = w.key;
-      w.lmin = std::numeric_limits<double>::infinity();
-      w.umax = -std::numeric_limits<double>::infinity();
-      int n = 0;
-      open(w, f0, ch, n);
-      if(n == 2 && w.stack->empty()) return true;
-      finish_piece(w, r, ch, n);
-    }
-    return false;
-  };
-  // The two chains of a piece, one of them stopped or both: the rest one at a time, then the
-  // rest of the piece.
-  auto drain = [&](Row& w, std::uint32_t r, Chain& c0, Chain& c1, bool g0, bool g1, Chain* ch) {
-    while(g0) g0 = step(w, c0);
-    while(g1) g1 = step(w, c1);
-    close(w, c0);
-    close(w, c1);
-    finish_piece(w, r, ch, 0);
-  };
-  for(std::size_t r0 = 0; r0 < R; r0 += 2) {
-    Row rows[2];
-    const std::size_t nr = r0 + 1 < R ? 2 : 1;
-    for(std::size_t j = 0; j < nr; ++j) {
-      Row& w = rows[j];
-      w.t = static_cast<double>(r0 + j);
-      w.key = ++ws.epoch;
-      w.stamp = ws.stamp.data() + 1 + j * (m + 1);
-      w.stamp[-1] = w.key;
-      w.stack = j == 0 ? &ws.stack : &ws.stack2;
-      w.stack->clear();
-      w.next = ws.count[r0 + j];
-      w.end = ws.count[r0 + j + 1];
-    }
-    const std::uint32_t r_0 = static_cast<std::uint32_t>(r0), r_1 = static_cast<std::uint32_t>(r0 + 1);
-    Chain a[3], b[3];
-    bool more_a = next_piece(rows[0], r_0, a), more_b = nr == 2 && next_piece(rows[1], r_1, b);
-    while(more_a && more_b) {
-      // four chains interleaved, so that their dependent loads overlap; the two of a closed
-      // piece meet half-way
-      Chain a0 = a[0], a1 = a[1], b0 = b[0], b1 = b[1]; // (local copies: kept in registers)
-      bool ga0 = true, ga1 = true, gb0 = true, gb1 = true;
-      while(ga0 && ga1 && gb0 && gb1) {
-        ga0 = step(rows[0], a0);
-        ga1 = step(rows[0], a1);
-        gb0 = step(rows[1], b0);
-        gb1 = step(rows[1], b1);
-      }
-      if(!ga0 || !ga1) { // piece a is done or nearly: finish it, go on with b
-        drain(rows[0], r_0, a0, a1, ga0, ga1, a);
-        if(!gb0 || !gb1) { // b as well
-          drain(rows[1], r_1, b0, b1, gb0, gb1, b);
-          more_b = next_piece(rows[1], r_1, b);
-        } else { // b continues: its chains resume with the next piece of a
-          b[0] = b0;
-          b[1] = b1;
-        }
-        more_a = next_piece(rows[0], r_0, a);
-      } else { // piece b is done or nearly
-        drain(rows[1], r_1, b0, b1, gb0, gb1, b);
-        a[0] = a0;
-        a[1] = a1;
-        more_b = next_piece(rows[1], r_1, b);
-      }
-    }
-    // one row left: its pieces with two chains interleaved
-    for(std::size_t j = 0; j < nr; ++j) {
-      Row& w = rows[j];
-      Chain* ch = j == 0 ? a : b;
-      const std::uint32_t r = j == 0 ? r_0 : r_1;
-      for(bool more = j == 0 ? more_a : more_b; more; more = next_piece(w, r, ch)) {
-        Chain c0 = ch[0], c1 = ch[1];
-        bool g0 = true, g1 = true;
-        while(g0 && g1) {
-          g0 = step(w, c0);
-          g1 = step(w, c1);
-        }
-        drain(w, r, c0, c1, g0, g1, ch);
-      }
-    }
   }
+
+  const V* corner_record(std::uint32_t f, int k) const { return &m_vx[static_cast<std::size_t>(m_links[f].v[k])]; }
+
+  const std::vector<Face_link>& m_links;
+  const Half_edge_link* m_he;
+  const V* m_vx;
+  std::size_t m_faces;
+  const S& m_s;
+  Contour_workspace<V>& m_ws;
+};
+
+/// The contour of the level sets t = 0..R-1 (vertex records in `ws.vx`) from the walk's seeds in
+/// `ws.bucket` / `ws.count` (see `Level_set_walker`). Alpha is sampled on `cols` columns over
+/// [0, alpha_scale] for the closing samples and stored divided by `alpha_scale`; `out` must have
+/// R rows.
+template <typename S>
+void walk_level_sets(const std::vector<Face_link>& links, const std::vector<Half_edge_link>& half_edges, const S& s, std::size_t R, std::size_t cols, double alpha_scale,
+                     Contour_workspace<typename S::Vertex>& ws, Spin_contour& out) {
+  Level_set_walker<S>(links, half_edges, s, ws).walk(R);
   finish_level_set_contour(s, R, cols, alpha_scale, ws, out);
 }
 

@@ -47,7 +47,7 @@ inline void splat_bilinear(Spin_image& img, double u, double v, double w) {
   const double fu = std::floor(u), fv = std::floor(v);
   const double du = u - fu, dv = v - fv;
   const long c0 = static_cast<long>(fu), r0 = static_cast<long>(fv);
-  const long C = static_cast<long>(img.cols()), R = static_cast<long>(img.rows());
+  const long C = static_cast<long>(img.columns()), R = static_cast<long>(img.rows());
   const double ws[4] = {(1 - du) * (1 - dv), du * (1 - dv), (1 - du) * dv, du * dv};
   const long rs[4] = {r0, r0, r0 + 1, r0 + 1}, cs[4] = {c0, c0 + 1, c0, c0 + 1};
   for(int k = 0; k < 4; ++k)

@@ -32,7 +32,7 @@ void for_each_single_source(const std::vector<std::size_t>& sources, unsigned th
   });
 }
 
-/// `estimate_geodesic_distances` of every engine: distances to the nearest of `sources`
+/// `compute_geodesic_distances` of every engine: distances to the nearest of `sources`
 /// (vertex descriptors) written into a vertex property map.
 template <typename Engine, typename VertexRange, typename VertexDistanceMap>
 void write_distances_to_set(const Engine& engine, const VertexRange& sources, VertexDistanceMap distance_map) {
