@@ -247,8 +247,8 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
       std::vector<shapecorr::Oriented_point> ot, os;
       for(std::size_t j = 0; j < N; ++j) ot.push_back(st.oriented_point(Vertex(static_cast<Mesh::size_type>(j))));
       for(std::size_t p : c.points) os.push_back(ss.oriented_point(Vertex(static_cast<Mesh::size_type>(p))));
-      const auto T = st.for_each_point<shapecorr::Spin_image>(ot, [&](const auto& op) { return st.spin_image(op); });
-      const auto P = ss.for_each_point<shapecorr::Spin_image>(os, [&](const auto& op) { return ss.spin_image(op); });
+      const auto T = st.spin_images(ot);
+      const auto P = ss.spin_images(os);
       r.curves = rank([&](std::size_t i, std::size_t j) { return shapecorr::Spin_image_distance()(P[i], T[j]); });
     } else {
       throw std::runtime_error("unknown descriptor " + d);

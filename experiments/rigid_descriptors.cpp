@@ -165,11 +165,10 @@ Result evaluate(const std::string& label, const std::vector<shapecorr::Descripto
   return r;
 }
 
-template <typename D, typename F>
-std::vector<D> at_points(const shapecorr::Spin_descriptors<Mesh>& sd, const std::vector<Location>& pts, Spin_axis axis, F&& f) {
+std::vector<shapecorr::Oriented_point> oriented_points(const shapecorr::Spin_descriptors<Mesh>& sd, const std::vector<Location>& pts, Spin_axis axis) {
   std::vector<shapecorr::Oriented_point> ops;
   for(const auto& l : pts) ops.push_back(sd.oriented_point(l, axis));
-  return sd.for_each_point<D>(ops, f);
+  return ops;
 }
 
 #ifdef SHAPECORR_WITH_PCL
@@ -256,36 +255,25 @@ std::vector<Result> run(const Experiment& ex, std::size_t n_points, unsigned see
   enum class Image { VERTICES, FACES_SAMPLED, FACES_EXACT };
   auto images = [&](Spin_axis axis, Image kind) {
     return [&, axis, kind] {
-      auto f = [&](const shapecorr::Spin_descriptors<Mesh>& d) {
-        return [&d, kind](const shapecorr::Oriented_point& op) {
-          return kind == Image::FACES_EXACT ? d.exact_face_spin_image(op) : kind == Image::FACES_SAMPLED ? d.face_spin_image(op) : d.spin_image(op);
-        };
+      auto of = [&](const shapecorr::Spin_descriptors<Mesh>& d, const std::vector<Location>& pts) {
+        const auto ops = oriented_points(d, pts, axis);
+        return kind == Image::FACES_EXACT ? d.exact_face_spin_images(ops) : kind == Image::FACES_SAMPLED ? d.face_spin_images(ops) : d.spin_images(ops);
       };
-      const auto a = at_points<shapecorr::Spin_image>(ds, src, axis, f(ds));
-      const auto b = at_points<shapecorr::Spin_image>(dt, tgt, axis, f(dt));
-      return shapecorr::match_descriptors(a, b, shapecorr::Spin_image_distance(), threads);
+      return shapecorr::match_descriptors(of(ds, src), of(dt, tgt), shapecorr::Spin_image_distance(), threads);
     };
   };
   // contours by the exact L1 distance, from their nearest-point indices (the same distances)
   auto contours = [&](Spin_axis axis) {
     return [&, axis] {
-      auto index = [](const shapecorr::Spin_descriptors<Mesh>& d) {
-        return [&d](const shapecorr::Oriented_point& op) { return shapecorr::Contour_nearest_point_index(d.spin_contour(op)); };
-      };
-      const auto a = at_points<shapecorr::Contour_nearest_point_index>(ds, src, axis, index(ds));
-      const auto b = at_points<shapecorr::Contour_nearest_point_index>(dt, tgt, axis, index(dt));
-      return shapecorr::match_descriptors(a, b, shapecorr::Indexed_contour_l1_distance(), threads);
+      return shapecorr::match_contours(ds.spin_contours(oriented_points(ds, src, axis)), dt.spin_contours(oriented_points(dt, tgt, axis)),
+                                       shapecorr::Contour_comparison::NEAREST_POINT_INDEX, threads);
     };
   };
   // the same contours compared through their distance fields (approximate L1)
   auto fields = [&](Spin_axis axis) {
     return [&, axis] {
-      auto field = [](const shapecorr::Spin_descriptors<Mesh>& d) {
-        return [&d](const shapecorr::Oriented_point& op) { return shapecorr::Contour_distance_field(d.spin_contour(op)); };
-      };
-      const auto a = at_points<shapecorr::Contour_distance_field>(ds, src, axis, field(ds));
-      const auto b = at_points<shapecorr::Contour_distance_field>(dt, tgt, axis, field(dt));
-      return shapecorr::match_descriptors(a, b, shapecorr::Approximate_contour_l1_distance(), threads);
+      return shapecorr::match_contours(ds.spin_contours(oriented_points(ds, src, axis)), dt.spin_contours(oriented_points(dt, tgt, axis)),
+                                       shapecorr::Contour_comparison::DISTANCE_FIELD, threads);
     };
   };
   timed("SI", images(Spin_axis::NORMAL, Image::VERTICES));

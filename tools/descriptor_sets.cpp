@@ -131,11 +131,11 @@ Descriptor_set compute_descriptor_set(const Mesh& m, const std::vector<std::size
   for(std::size_t i : ids) ops.push_back(sd->oriented_point(vertex_descriptor(static_cast<Mesh::size_type>(i))));
   const auto progress = reporter(a, label);
   if(type == "spin-contour")
-    s.contours = sd->for_each_point<shapecorr::Spin_contour>(ops, [&](const auto& op) { return sd->spin_contour(op); }, progress);
+    s.contours = sd->spin_contours(ops, progress);
   else if(type == "face-spin-image")
-    s.images = sd->for_each_point<shapecorr::Spin_image>(ops, [&](const auto& op) { return face_image(*sd, op, a.has("exact-area")); }, progress);
+    s.images = a.has("exact-area") ? sd->exact_face_spin_images(ops, progress) : sd->face_spin_images(ops, progress);
   else
-    s.images = sd->for_each_point<shapecorr::Spin_image>(ops, [&](const auto& op) { return sd->spin_image(op); }, progress);
+    s.images = sd->spin_images(ops, progress);
   return s;
 }
 

@@ -35,11 +35,10 @@ namespace shapecorr {
 /// the same grid (the same sample count and alpha range, as for all contours with alphas in [0, 1])
 /// are compared with one lookup and one multiply-add per point.
 ///
-/// Cost (benchmark/README.md, fandisk, 120 rows, 121 samples): preparing a field takes about half
-/// the time of building the contour and 120 x 121 x 2 bytes (as much memory as a 120 x 60 float
-/// image); comparing two prepared contours costs about 1/30 of a spin image correlation and 1/50
-/// of the exact `contour_l1_distance`. Worth it when each contour is compared many times (matching N
-/// sources against M targets prepares N + M fields for N x M comparisons).
+/// Cost: preparing is O(rows x alpha_samples + points) and takes rows x alpha_samples x 2 bytes;
+/// comparing two prepared contours is one lookup and one multiply-add per point, O(points). Worth
+/// it when each contour is compared many times (matching N sources against M targets prepares
+/// N + M fields for N x M comparisons). benchmark/README.md has the measured ratios.
 class Contour_distance_field {
 public:
   Contour_distance_field() = default;

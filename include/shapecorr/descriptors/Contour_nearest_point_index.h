@@ -46,12 +46,12 @@ namespace shapecorr {
 /// that margin covers the rounding (all 64 x 64 pairs of the benchmark; in general, up to the
 /// rounding of a breakpoint between points a few ulps apart in alpha).
 ///
-/// Cost (benchmark/README.md, fandisk, 120 rows, 128 cells): preparing takes about 0.7x the time
-/// of building the contour; memory: one byte per cell and 6 bytes per envelope piece (about 19
-/// pieces per row), 32 KB with its own points, about a 120 x 60 float image; a comparison takes about 1/13 of a spin
-/// image correlation and 1/18 of `contour_l1_distance` on the contours. Worth it when each contour
-/// is compared many times (matching N sources against M targets prepares N + M contours for
-/// N x M comparisons).
+/// Cost: preparing is O(points + rows x cells) (less than building the contour); memory is one
+/// byte per cell and 6 bytes per envelope piece (a few tens of KB for 120 rows); a comparison is
+/// one cell lookup and a few envelope pieces per point, O(points), instead of the row search's
+/// binary searches. Worth it when each contour is compared many times (matching N sources against
+/// M targets prepares N + M contours for N x M comparisons). benchmark/README.md has the measured
+/// ratios.
 class Contour_nearest_point_index {
 public:
   Contour_nearest_point_index() = default;

@@ -261,7 +261,7 @@ public:
   ///   Geodesic_spin_descriptors<Mesh>::Workspace ws(gsd);   // in each thread
   ///   for(auto v : my_vertices) contours.push_back(gsd.geodesic_spin_contour(v, ws));
   /// \endcode
-  class Workspace {
+  class alignas(64) Workspace { // (a cache line of its own: workspaces of two threads side by side in a vector must not share one)
   public:
     /// A workspace for `gsd`'s descriptors (only: using it with another object throws).
     explicit Workspace(const Geodesic_spin_descriptors& gsd) : m_owner(&gsd) { gsd.reset(*this); }

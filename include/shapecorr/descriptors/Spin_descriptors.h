@@ -63,6 +63,8 @@ public:
   typedef typename GT::face_descriptor face_descriptor;
   /// A point on a face by barycentric coordinates (CGAL's Polygon Mesh Processing location).
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  /// Progress callback `f(done, total)` of the batch functions.
+  typedef std::function<void(std::size_t, std::size_t)> Progress;
 
   template <typename NamedParameters = parameters::Default_named_parameters>
   /// Precomputes normals, the centroid and the flat copy of `tm` (named parameters above).
@@ -159,8 +161,27 @@ public:
     return internal::spin_contour(m_geometry, op, m_options, ws);
   }
 
-  /// Applies `fn(op)` (one of the three members above, as a lambda) to many oriented points in
-  /// parallel; `progress(done, total)` when given.
+  /// The batch forms, in parallel over many oriented points (as `Geodesic_spin_descriptors`'
+  /// `geodesic_spin_contours`): one descriptor per point, in order; `progress(done, total)` when
+  /// given.
+  std::vector<Spin_image> spin_images(const std::vector<Oriented_point>& ops, const Progress& progress = {}) const {
+    return for_each_point<Spin_image>(ops, [&](const Oriented_point& op) { return spin_image(op); }, progress);
+  }
+  /// (batch form of `face_spin_image`)
+  std::vector<Spin_image> face_spin_images(const std::vector<Oriented_point>& ops, const Progress& progress = {}) const {
+    return for_each_point<Spin_image>(ops, [&](const Oriented_point& op) { return face_spin_image(op); }, progress);
+  }
+  /// (batch form of `exact_face_spin_image`)
+  std::vector<Spin_image> exact_face_spin_images(const std::vector<Oriented_point>& ops, const Progress& progress = {}) const {
+    return for_each_point<Spin_image>(ops, [&](const Oriented_point& op) { return exact_face_spin_image(op); }, progress);
+  }
+  /// (batch form of `spin_contour`)
+  std::vector<Spin_contour> spin_contours(const std::vector<Oriented_point>& ops, const Progress& progress = {}) const {
+    return for_each_point<Spin_contour>(ops, [&](const Oriented_point& op) { return spin_contour(op); }, progress);
+  }
+
+private:
+  // fn(op) for many oriented points in parallel, with progress reports.
   template <typename Descriptor, typename Fn>
   std::vector<Descriptor> for_each_point(const std::vector<Oriented_point>& ops, Fn&& fn,
                                          const std::function<void(std::size_t, std::size_t)>& progress = {}) const {
@@ -178,7 +199,6 @@ public:
     return out;
   }
 
-private:
   std::size_t face_row(face_descriptor fd) const {
     const std::size_t i = m_face_index(fd);
     if(i >= m_face_row.size()) throw Invalid_argument("spin descriptors: the face location is not on this mesh");
@@ -203,7 +223,7 @@ void compute_for_vertices(const TriangleMesh& tm, const VertexRange& vertices_, 
   std::vector<Oriented_point> ops;
   ops.reserve(vs.size());
   for(auto v : vs) ops.push_back(sd.oriented_point(v));
-  const std::vector<Descriptor> d = sd.template for_each_point<Descriptor>(ops, [&](const Oriented_point& op) { return fn(sd, op); }, progress_of(np));
+  const std::vector<Descriptor> d = fn(sd, ops, progress_of(np));
   for(std::size_t i = 0; i < vs.size(); ++i) put(map, vs[i], d[i]);
 }
 } // namespace internal
@@ -216,7 +236,7 @@ void compute_for_vertices(const TriangleMesh& tm, const VertexRange& vertices_, 
 template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
 void compute_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
                          const NamedParameters& np = CGAL::parameters::default_values()) {
-  internal::compute_for_vertices<Spin_image>(tm, vertices, images, np, [](const auto& sd, const Oriented_point& op) { return sd.spin_image(op); });
+  internal::compute_for_vertices<Spin_image>(tm, vertices, images, np, [](const auto& sd, const auto& ops, const auto& progress) { return sd.spin_images(ops, progress); });
 }
 
 /// \ingroup PkgShapeCorrDescriptors
@@ -224,7 +244,7 @@ void compute_spin_images(const TriangleMesh& tm, const VertexRange& vertices, De
 template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
 void compute_face_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
                               const NamedParameters& np = CGAL::parameters::default_values()) {
-  internal::compute_for_vertices<Spin_image>(tm, vertices, images, np, [](const auto& sd, const Oriented_point& op) { return sd.face_spin_image(op); });
+  internal::compute_for_vertices<Spin_image>(tm, vertices, images, np, [](const auto& sd, const auto& ops, const auto& progress) { return sd.face_spin_images(ops, progress); });
 }
 
 /// \ingroup PkgShapeCorrDescriptors
@@ -234,7 +254,7 @@ template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, t
 void compute_exact_face_spin_images(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap images,
                                     const NamedParameters& np = CGAL::parameters::default_values()) {
   internal::compute_for_vertices<Spin_image>(tm, vertices, images, np,
-                                             [](const auto& sd, const Oriented_point& op) { return sd.exact_face_spin_image(op); });
+                                             [](const auto& sd, const auto& ops, const auto& progress) { return sd.exact_face_spin_images(ops, progress); });
 }
 
 /// \ingroup PkgShapeCorrDescriptors
@@ -244,7 +264,7 @@ void compute_exact_face_spin_images(const TriangleMesh& tm, const VertexRange& v
 template <typename TriangleMesh, typename VertexRange, typename DescriptorMap, typename NamedParameters = parameters::Default_named_parameters>
 void compute_spin_contours(const TriangleMesh& tm, const VertexRange& vertices, DescriptorMap contours,
                            const NamedParameters& np = CGAL::parameters::default_values()) {
-  internal::compute_for_vertices<Spin_contour>(tm, vertices, contours, np, [](const auto& sd, const Oriented_point& op) { return sd.spin_contour(op); });
+  internal::compute_for_vertices<Spin_contour>(tm, vertices, contours, np, [](const auto& sd, const auto& ops, const auto& progress) { return sd.spin_contours(ops, progress); });
 }
 
 } // namespace shapecorr

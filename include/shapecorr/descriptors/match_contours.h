@@ -23,14 +23,14 @@ namespace shapecorr {
 enum class Contour_comparison {
   AUTOMATIC,           ///< `EXACT` for fewer than `indexed_contour_matching_threshold` sources, else `NEAREST_POINT_INDEX`: the exact distances, at the lower cost
   EXACT,               ///< `contour_l1_distance` on the contours as they are (no preparation)
-  NEAREST_POINT_INDEX, ///< contours prepared as `Contour_nearest_point_index`: the same distances bit for bit, each comparison about 15x cheaper
+  NEAREST_POINT_INDEX, ///< contours prepared as `Contour_nearest_point_index`: the same distances bit for bit, each comparison O(points) instead of a binary search per point
   DISTANCE_FIELD       ///< contours prepared as `Contour_distance_field`: approximate distances (at most `error_bound()` off, 1/240 with the default 121 samples), each comparison about half an indexed one
 };
 
 /// \ingroup PkgShapeCorrDescriptors
-/// From this many sources on, `AUTOMATIC` prepares nearest-point indices: preparing one costs
-/// about as much as 30 exact comparisons (measured, benchmark/README.md), so it pays off when each
-/// target contour is compared with at least that many sources.
+/// From this many sources on, `AUTOMATIC` prepares nearest-point indices: preparing a contour's
+/// index costs about as much as a few tens of exact comparisons, so it pays off when each target
+/// contour is compared with at least that many sources.
 constexpr std::size_t indexed_contour_matching_threshold = 32;
 
 /// \ingroup PkgShapeCorrDescriptors

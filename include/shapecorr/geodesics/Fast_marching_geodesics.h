@@ -27,8 +27,8 @@ namespace shapecorr {
 /// R, so its cost is proportional to the ball, not to the mesh. Also a model of
 /// `GeodesicDistanceEngine` (full single- and multi-source distances, batched queries in parallel).
 ///
-/// Accuracy: first order; on the TOSCA wolf (4344 vertices) the mean error against exact
-/// distances is about 0.36% of the geodesic diameter (see benchmark/README.md).
+/// Accuracy: first order in the edge length (exact on flat patches); benchmark/README.md states
+/// the mean error against exact distances on a TOSCA mesh.
 /// Vertices not reachable from a source (other components) get `+infinity`.
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
 template <typename TriangleMesh>

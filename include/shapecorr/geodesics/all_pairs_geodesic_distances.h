@@ -145,11 +145,10 @@ Geodesic_distance_matrix all_pairs_from_engine(const Fast_marching_geodesics<Tri
 
 /// \ingroup PkgShapeCorrGeodesics
 /// All-pairs geodesic distances between the vertices of `tm`, in the order of the engine's vertex
-/// index map. Cost: n single-source queries in parallel. The default backend is fast marching
-/// (TOSCA wolf, 4344 vertices, 2 cores: 1.15 s, 4.9x faster than looping CGAL's `Heat_method_3`, mean
-/// error 0.36% of the diameter); the heat method
+/// index map. Cost: n single-source queries in parallel; memory 4 n^2 bytes. The default backend
+/// is fast marching (first order, the more accurate); the heat method
 /// (`geodesic_method(Geodesic_method::HEAT)`, batched multi right-hand-side solves) is faster and
-/// less accurate (0.89 s in the same run, 0.8% with the intrinsic Delaunay triangulation).
+/// less accurate. benchmark/README.md has the times and errors against CGAL's `Heat_method_3`.
 /// \param np optional named parameters:
 /// | name | meaning | type | default |
 /// |---|---|---|---|

@@ -38,8 +38,9 @@ namespace shapecorr {
 /// of the LDL^T factorization of `L - cut M`) checks that no eigenvalue below the cut was missed;
 /// if one was (Lanczos can miss a member of a tight cluster), or if the assembled eigenvectors are
 /// not M-orthonormal to 1e-8 (a cluster wider than the window was cut), one run over all
-/// `k + margin` pairs replaces the slices. The Lanczos cost grows with the square of the subspace, so slices of 100
-/// are about 4x faster than one run for 300 pairs (TOSCA wolf: 0.67 s vs 2.63 s, benchmark/README.md).
+/// `k + margin` pairs replaces the slices. The Lanczos cost grows with the square of the subspace
+/// (O(n ncv^2)), so several slices of 100 cost less than one run for all k pairs, at the price of
+/// one factorization per slice.
 /// Small problems (`n <= dense_size` or `k + margin >= n / 2`) use Eigen's dense self-adjoint
 /// solver instead.
 ///
