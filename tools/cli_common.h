@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -102,6 +103,11 @@ inline std::vector<std::size_t> parse_ids(const std::string& s, std::size_t n) {
   }
   if(ids.empty()) throw Usage_error("a list of vertex ids needs at least one id");
   return ids;
+}
+
+// Seconds of wall time since t0.
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Whether notes and progress go to stderr (no --quiet).

@@ -13,10 +13,6 @@ namespace {
 
 namespace SP = shapecorr::parameters;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Spectral signatures of every vertex, with an eigenbasis that may be loaded or saved.
 int run_spectral(const Mesh& m, const Args& a, const std::string& type, const std::string& output) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -109,8 +105,7 @@ std::vector<Option> options() {
                            {"load-eigenbasis", "FILE", "hks|wks|sihks: use this saved eigenbasis"},
                            {"save-eigenbasis", "FILE", "hks|wks|sihks: save the computed eigenbasis"}};
   for(const Option& x : descriptor_options()) o.push_back(x);
-  for(const Option& x : mesh_reading_options()) o.push_back(x);
-  return o;
+  return with_mesh_reading_options(o);
 }
 
 } // namespace

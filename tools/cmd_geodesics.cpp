@@ -11,10 +11,6 @@
 namespace cli {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 int run_geodesics(const Args& a) {
   Mesh m = read_mesh(a);
   const std::vector<std::size_t> ids = parse_ids(a.require("source"), m.number_of_vertices());
@@ -91,11 +87,6 @@ int run_agd(const Args& a) {
   return 0;
 }
 
-std::vector<Option> with_mesh_options(std::vector<Option> o) {
-  for(const Option& x : mesh_reading_options()) o.push_back(x);
-  return o;
-}
-
 } // namespace
 
 const Command& geodesics_command() {
@@ -104,7 +95,7 @@ const Command& geodesics_command() {
                          "(default, fast), exact (CGAL's shortest paths) or fast marching. FILE.csv: one distance per "
                          "line in vertex order; FILE.ply: the mesh coloured by distance, sources marked. Vertices of "
                          "components without a source get inf (a note says how many).",
-                         with_mesh_options({{"source", "V[,V...]", "source vertex ids"},
+                         with_mesh_reading_options({{"source", "V[,V...]", "source vertex ids"},
                                             {"method", "heat|exact|fmm", "distance backend (default heat)"},
                                             {"output", "FILE", ".csv (values) or .ply (coloured mesh)"}}),
                          1, 1, run_geodesics};
@@ -115,7 +106,7 @@ const Command& sample_command() {
   static const Command c{"sample", "sample MESH --count N [--metric geodesic|euclidean] [--seed S] [--output FILE]",
                          "Furthest point sampling (thesis chapter 5): N vertex ids in selection order, one per line, on "
                          "stdout or in FILE. The arbitrary start vertex, drawn with the seed, is not among them.",
-                         with_mesh_options({{"count", "N", "number of samples"},
+                         with_mesh_reading_options({{"count", "N", "number of samples"},
                                             {"metric", "geodesic|euclidean", "distance between samples (default geodesic, heat method)"},
                                             {"seed", "S", "seed of the start vertex (default 0)"},
                                             {"output", "FILE", "write the ids here instead of stdout"}}),
@@ -128,7 +119,7 @@ const Command& agd_command() {
                          "Average geodesic distance of every vertex (thesis chapter 4): global, from K furthest-point "
                          "sources weighted by their Voronoi areas (default 100; 0 = every vertex), or local, within "
                          "FRACTION x the geodesic diameter. FILE.csv: one value per line; FILE.ply: coloured mesh.",
-                         with_mesh_options({{"radius", "FRACTION", "local agd within FRACTION x D"},
+                         with_mesh_reading_options({{"radius", "FRACTION", "local agd within FRACTION x D"},
                                             {"sources", "K", "global agd from K sources (default 100, 0 = all)"},
                                             {"output", "FILE", ".csv (values) or .ply (coloured mesh)"}}),
                          1, 1, run_agd};

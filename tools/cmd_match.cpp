@@ -96,8 +96,7 @@ std::vector<Option> options() {
       {"distance-view", "V", "PREFIX_source.ply and PREFIX_target.ply: both shapes coloured by the descriptor distance to source vertex V"},
       {"distance-view-prefix", "PREFIX", "prefix of the --distance-view files (default: FILE)"}};
   for(const Option& x : descriptor_options()) o.push_back(x);
-  for(const Option& x : mesh_reading_options()) o.push_back(x);
-  return o;
+  return with_mesh_reading_options(o);
 }
 
 } // namespace

@@ -8,9 +8,10 @@
 
 namespace cli {
 
-std::vector<Option> mesh_reading_options() {
-  return {{"repair-non-manifold", "", "split non-manifold edges and vertices instead of refusing the mesh"},
-          {"quiet", "", "no notes and progress on stderr"}};
+std::vector<Option> with_mesh_reading_options(std::vector<Option> own) {
+  own.push_back({"repair-non-manifold", "", "split non-manifold edges and vertices instead of refusing the mesh"});
+  own.push_back({"quiet", "", "no notes and progress on stderr"});
+  return own;
 }
 
 namespace {

@@ -55,8 +55,8 @@ struct Command {
 /// Every command, in the order `shapecorr --help` lists them (commands.cpp).
 const std::vector<Command>& command_table();
 
-/// Options that every command reading meshes takes.
-std::vector<Option> mesh_reading_options();
+/// `own` followed by the options that every command reading meshes takes.
+std::vector<Option> with_mesh_reading_options(std::vector<Option> own);
 
 /// Parses argv[first..] for `c`: unknown options (with the nearest known name suggested), missing
 /// values and a wrong number of positional arguments are usage errors.

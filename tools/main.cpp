@@ -9,6 +9,18 @@
 #include <iostream>
 #include <string>
 
+namespace {
+// The kind of a library error as printed after its message: the defect of bad input, else the
+// error's class.
+std::string error_kind(const shapecorr::Error& e) {
+  if(const auto* in = dynamic_cast<const shapecorr::Invalid_input*>(&e)) return shapecorr::to_string(in->defect());
+  if(dynamic_cast<const shapecorr::Invalid_argument*>(&e)) return "invalid_argument";
+  if(dynamic_cast<const shapecorr::Output_error*>(&e)) return "output_error";
+  if(dynamic_cast<const shapecorr::Solver_failure*>(&e)) return "solver_failure";
+  return "error";
+}
+} // namespace
+
 int main(int argc, char** argv) {
   using namespace cli;
   const std::string first = argc < 2 ? "" : argv[1];
@@ -34,17 +46,8 @@ int main(int argc, char** argv) {
   } catch(const Usage_error& e) {
     std::cerr << "shapecorr: " << e.what() << "\n";
     return 2;
-  } catch(const shapecorr::Invalid_input& e) {
-    std::cerr << "shapecorr: error: " << e.what() << " [" << shapecorr::to_string(e.defect()) << "]\n";
-    return 1;
-  } catch(const shapecorr::Invalid_argument& e) {
-    std::cerr << "shapecorr: error: " << e.what() << " [invalid_argument]\n";
-    return 1;
-  } catch(const shapecorr::Output_error& e) {
-    std::cerr << "shapecorr: error: " << e.what() << " [output_error]\n";
-    return 1;
-  } catch(const shapecorr::Solver_failure& e) {
-    std::cerr << "shapecorr: error: " << e.what() << " [solver_failure]\n";
+  } catch(const shapecorr::Error& e) {
+    std::cerr << "shapecorr: error: " << e.what() << " [" << error_kind(e) << "]\n";
     return 1;
   } catch(const std::exception& e) {
     std::cerr << "shapecorr: error: " << e.what() << "\n";
