@@ -14,7 +14,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <charconv>
 #include <cmath>
+#include <cctype>
+#include <limits>
+#include <sstream>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -30,19 +34,33 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 
-inline std::size_t to_count(const std::string& s, const std::string& what) {
-  char* end = nullptr;
-  const long long v = std::strtoll(s.c_str(), &end, 10);
-  if(s.empty() || *end != '\0' || v < 0) throw Usage_error(what + " must be a non-negative integer, got '" + s + "'");
+// An integer option value in [lo, hi]: digits only (no sign, point, exponent or spaces); the
+// usage error names the option and the range.
+inline std::size_t to_count(const std::string& s, const std::string& what, std::size_t lo, std::size_t hi) {
+  const std::string range = " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + s + "'";
+  unsigned long long v = 0;
+  const char* end = s.data() + s.size();
+  const auto r = std::from_chars(s.data(), end, v, 10);
+  if(s.empty() || r.ptr != end || (r.ec != std::errc() && r.ec != std::errc::result_out_of_range)) throw Usage_error(what + range);
+  if(r.ec == std::errc::result_out_of_range || v < lo || v > hi) throw Usage_error(what + range);
   return static_cast<std::size_t>(v);
 }
 
-inline double to_double(const std::string& s, const std::string& what) {
+// A real option value, finite, in [lo, hi] (in (lo, hi] when `above_lo`); the usage error names
+// the option and the range.
+inline double to_double(const std::string& s, const std::string& what, double lo, double hi, bool above_lo = false) {
   char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if(s.empty() || *end != '\0' || !std::isfinite(v)) throw Usage_error(what + " must be a number, got '" + s + "'");
+  const double v = s.empty() || std::isspace(static_cast<unsigned char>(s[0])) ? std::nan("") : std::strtod(s.c_str(), &end);
+  std::ostringstream range;
+  range << " must be a number in " << (above_lo ? "(" : "[") << lo << ", " << hi << "], got '" << s << "'";
+  if(s.empty() || end == nullptr || *end != '\0' || !std::isfinite(v) || v < lo || v > hi || (above_lo && v == lo)) throw Usage_error(what + range.str());
   return v;
 }
+
+// Ranges of the options several commands share.
+constexpr std::size_t max_count = 1000000000; // sample counts, points, sources
+constexpr std::size_t max_seed = 4294967295u;
+constexpr std::size_t max_bins = 4096;        // image rows and columns
 
 inline std::string extension(const std::string& path) {
   const auto dot = path.rfind('.');
@@ -69,18 +87,24 @@ inline std::ofstream open_output(const std::string& path) {
   return out;
 }
 
-inline void write_values(const std::string& path, const Mesh& m, const std::vector<double>& values,
-                  const std::vector<std::size_t>& highlight = {}) {
+// One value per vertex: FILE.csv one per line, an undefined (non-finite) value as an empty line;
+// FILE.ply the mesh coloured, undefined values grey. Returns the number of undefined values.
+inline std::size_t write_values(const std::string& path, const Mesh& m, const std::vector<double>& values,
+                                const std::vector<std::size_t>& highlight = {}) {
   const std::string ext = extension(path);
   if(ext == "ply") {
     shapecorr::write_colored_ply(path, m, values, highlight);
   } else if(ext == "csv" || ext == "txt") {
     std::ofstream out = open_output(path);
     out.precision(9);
-    for(double v : values) out << v << "\n";
+    for(double v : values) {
+      if(std::isfinite(v)) out << v;
+      out << "\n";
+    }
   } else {
     throw Usage_error("output must end in .csv or .ply: " + path);
   }
+  return static_cast<std::size_t>(std::count_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }));
 }
 
 inline std::string json_escape(const std::string& s) {
@@ -97,7 +121,7 @@ inline std::vector<std::size_t> parse_ids(const std::string& s, std::size_t n) {
   std::stringstream ss(s);
   std::string tok;
   while(std::getline(ss, tok, ',')) {
-    const std::size_t v = to_count(tok, "vertex id");
+    const std::size_t v = to_count(tok, "vertex id", 0, std::numeric_limits<std::size_t>::max());
     if(v >= n) throw shapecorr::Invalid_argument("vertex id " + tok + " out of range (mesh has " + std::to_string(n) + " vertices)");
     ids.push_back(v);
   }

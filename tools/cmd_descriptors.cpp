@@ -24,13 +24,13 @@ int run_spectral(const Mesh& m, const Args& a, const std::string& type, const st
       throw shapecorr::Invalid_argument(a.get("load-eigenbasis") + ": eigenbasis of " + std::to_string(basis.number_of_vertices()) +
                                         " vertices, mesh has " + std::to_string(m.number_of_vertices()));
   } else {
-    const std::size_t k = to_count(a.get("eigenpairs", "300"), "--eigenpairs");
+    const std::size_t k = to_count(a.get("eigenpairs", "300"), "--eigenpairs", 1, 100000);
     basis = shapecorr::compute_laplace_beltrami_eigenbasis(m, std::min<std::size_t>(k, m.number_of_vertices()));
     if(a.has("save-eigenbasis")) basis.save(a.get("save-eigenbasis"));
   }
   const auto t1 = std::chrono::steady_clock::now();
   const Eigen::MatrixXd D = shapecorr::spectral_signature_matrix(basis, shapecorr::spectral_signature_from_string(type),
-                                                                 SP::number_of_scales(to_count(a.get("scales", "100"), "--scales")));
+                                                                 SP::number_of_scales(to_count(a.get("scales", "100"), "--scales", 1, 10000)));
   const auto t2 = std::chrono::steady_clock::now();
   if(a.has("distance-to")) {
     const std::vector<std::size_t> v = parse_ids(a.get("distance-to"), m.number_of_vertices());
@@ -71,9 +71,12 @@ int run_descriptors(const Args& a) {
   if(a.has("distance-to")) { // the descriptor distance of every vertex to vertex V
     const std::size_t v = parse_ids(a.get("distance-to"), m.number_of_vertices())[0];
     const Descriptor_set s = compute_descriptor_set(m, all_ids(m.number_of_vertices()), type, a, m, "descriptors");
-    write_values(output, m, distances_from(s, s, v), {v});
-    if(verbose(a))
+    const std::size_t undefined = write_values(output, m, distances_from(s, s, v), {v});
+    if(verbose(a)) {
       std::cerr << "descriptors: " << type << " distance of every vertex to vertex " << v << ", " << seconds_since(t0) << " s -> " << output << "\n";
+      if(undefined)
+        std::cerr << "note: " << undefined << " vertices have no distance (one of the two descriptors is empty: a flat neighbourhood; an empty line in .csv, grey in .ply)\n";
+    }
     return 0;
   }
   const std::vector<std::size_t> ids = a.has("vertices") ? parse_ids(a.get("vertices"), m.number_of_vertices()) : all_ids(m.number_of_vertices());
@@ -92,7 +95,11 @@ int run_descriptors(const Args& a) {
       out << "\n";
     }
   }
-  if(verbose(a)) std::cerr << "descriptors: " << type << " of " << ids.size() << " vertices, " << seconds_since(t0) << " s -> " << output << "\n";
+  if(verbose(a)) {
+    std::cerr << "descriptors: " << type << " of " << ids.size() << " vertices, " << seconds_since(t0) << " s -> " << output << "\n";
+    const std::size_t empty = static_cast<std::size_t>(std::count_if(s.contours.begin(), s.contours.end(), [](const shapecorr::Spin_contour& c) { return c.empty(); }));
+    if(empty) std::cerr << "note: " << empty << " vertices have an empty contour (no descriptor: a flat neighbourhood): no rows\n";
+  }
   return 0;
 }
 
@@ -117,7 +124,8 @@ const Command& descriptors_command() {
       "comma-separated row per vertex. Rigid (thesis chapter 3: spin-image, face-spin-image, spin-contour, "
       "improved-spin-image; support and central radius are fractions of the extent, 2 x the largest distance from the "
       "area centroid): images as one row per vertex (id, then rows x columns bins, row-major), contours as "
-      "vertex,alpha,beta rows normalized by the support. Geodesic (thesis chapter 4: gsc, geodesic-spin-image; "
+      "vertex,alpha,beta rows normalized by the support (none for a vertex whose contour is empty: no descriptor, "
+      "counted in a note). Geodesic (thesis chapter 4: gsc, geodesic-spin-image; "
       "coordinates (agd, gd), support and agd radius fractions of the geodesic diameter D; beta = gd / L, alpha = agd "
       "scaled by its range over the mesh): the same outputs. --plot V draws vertex V's image and contour; --distance-to V "
       "writes every vertex's descriptor distance to V.",

@@ -35,15 +35,15 @@ int run_geodesics(const Args& a) {
     std::cerr << "geodesics: " << ids.size() << " source(s), method " << a.get("method", "heat") << ", max distance " << dmax << ", "
               << secs << " s -> " << output << "\n";
     if(unreachable)
-      std::cerr << "note: " << unreachable << " vertices lie in components without a source: their distance is inf\n";
+      std::cerr << "note: " << unreachable << " vertices lie in components without a source: no distance (an empty line in .csv, grey in .ply)\n";
   }
   return 0;
 }
 
 int run_sample(const Args& a) {
   const Mesh m = read_mesh(a);
-  const std::size_t count = to_count(a.require("count"), "--count");
-  const unsigned seed = static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed"));
+  const std::size_t count = to_count(a.require("count"), "--count", 1, max_count);
+  const unsigned seed = static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed", 0, max_seed));
   const std::string metric = a.get("metric", "geodesic");
   if(metric != "geodesic" && metric != "euclidean") throw Usage_error("sample: --metric must be geodesic or euclidean");
   std::vector<vertex_descriptor> samples;
@@ -70,20 +70,23 @@ int run_agd(const Args& a) {
   std::string what;
   if(a.has("radius")) {
     if(a.has("sources")) throw Usage_error("agd: --sources applies to the global agd, not with --radius");
-    const double fraction = to_double(a.get("radius"), "--radius");
+    const double fraction = to_double(a.get("radius"), "--radius", 0, 2, true);
     const double D = shapecorr::geodesic_diameter(m);
     shapecorr::compute_local_average_geodesic_distance(m, fraction * D, agd);
     what = "local agd, r = " + a.get("radius") + " D (D = " + std::to_string(D) + ")";
   } else {
-    const std::size_t k = to_count(a.get("sources", "100"), "--sources");
+    const std::size_t k = to_count(a.get("sources", "100"), "--sources", 0, max_count);
     shapecorr::compute_average_geodesic_distance(m, agd, shapecorr::parameters::number_of_sources(k));
     what = "global agd from " + (k == 0 ? std::string("all") : std::to_string(k)) + " sources";
   }
   const double secs = seconds_since(t0);
   std::vector<double> values(m.number_of_vertices());
   for(vertex_descriptor v : vertices(m)) values[v.idx()] = agd[v];
-  write_values(output, m, values);
-  if(verbose(a)) std::cerr << "agd: " << what << ", " << secs << " s -> " << output << "\n";
+  const std::size_t undefined = write_values(output, m, values);
+  if(verbose(a)) {
+    std::cerr << "agd: " << what << ", " << secs << " s -> " << output << "\n";
+    if(undefined) std::cerr << "note: " << undefined << " vertices have no average geodesic distance (an empty line in .csv, grey in .ply)\n";
+  }
   return 0;
 }
 
@@ -94,7 +97,8 @@ const Command& geodesics_command() {
                          "Geodesic distance of every vertex to the nearest source (0-based vertex ids): heat method "
                          "(default, fast), exact (CGAL's shortest paths) or fast marching. FILE.csv: one distance per "
                          "line in vertex order; FILE.ply: the mesh coloured by distance, sources marked. Vertices of "
-                         "components without a source get inf (a note says how many).",
+                         "components without a source have no distance: an empty line in FILE.csv, grey in FILE.ply, "
+                         "counted in a note on stderr.",
                          with_mesh_reading_options({{"source", "V[,V...]", "source vertex ids"},
                                             {"method", "heat|exact|fmm", "distance backend (default heat)"},
                                             {"output", "FILE", ".csv (values) or .ply (coloured mesh)"}}),

@@ -13,13 +13,14 @@ int run_info(const Args& a) {
   const std::string path = a.positional[0];
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
-  shapecorr::read_polygon_soup_checked(path, points, polygons);
+  shapecorr::read_polygon_soup(path, points, polygons);
   const shapecorr::Mesh_report r = shapecorr::validate_polygon_soup(points, polygons);
   if(a.has("json")) {
     std::cout << "{\"file\": \"" << json_escape(path) << "\", \"vertices\": " << r.number_of_vertices
               << ", \"faces\": " << r.number_of_faces << ", \"connected_components\": " << r.connected_components
               << ", \"boundary_edges\": " << r.boundary_edges << ", \"non_triangle_faces\": " << r.non_triangle_faces
-              << ", \"non_finite_vertices\": " << r.non_finite_vertices << ", \"degenerate_faces\": " << r.degenerate_faces
+              << ", \"non_finite_vertices\": " << r.non_finite_vertices << ", \"out_of_range_vertices\": " << r.out_of_range_vertices
+              << ", \"degenerate_faces\": " << r.degenerate_faces
               << ", \"non_manifold_edges\": " << r.non_manifold_edges << ", \"non_manifold_vertices\": " << r.non_manifold_vertices
               << ", \"isolated_vertices\": " << r.isolated_vertices << ", \"area\": " << r.area
               << ", \"mean_edge_length\": " << r.mean_edge_length << ", \"bbox_diagonal\": " << r.bbox_diagonal

@@ -21,16 +21,16 @@ std::vector<std::size_t> source_points(const Mesh& source, const Args& a) {
     if(!in) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, a.get("source-points") + ": cannot read");
     std::string tok;
     while(in >> tok) {
-      const std::size_t v = to_count(tok, "source point");
+      const std::size_t v = to_count(tok, a.get("source-points") + ": source point", 0, std::numeric_limits<std::size_t>::max());
       if(v >= source.number_of_vertices()) throw shapecorr::Invalid_argument("source point " + tok + " out of range");
       ids.push_back(v);
     }
     if(ids.empty()) throw Usage_error(a.get("source-points") + ": no vertex ids");
     return ids;
   }
-  const std::size_t n = std::min<std::size_t>(to_count(a.get("points", "100"), "--points"), source.number_of_vertices());
+  const std::size_t n = std::min<std::size_t>(to_count(a.get("points", "100"), "--points", 1, max_count), source.number_of_vertices());
   std::vector<vertex_descriptor> samples;
-  shapecorr::furthest_point_sampling(source, n, std::back_inserter(samples), SP::random_seed(static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed"))));
+  shapecorr::furthest_point_sampling(source, n, std::back_inserter(samples), SP::random_seed(static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed", 0, max_seed))));
   for(auto v : samples) ids.push_back(v.idx());
   return ids;
 }
@@ -41,8 +41,7 @@ int run_match(const Args& a) {
   if(a.has("exact-area") && type != "face-spin-image") throw Usage_error("--exact-area applies to --descriptor face-spin-image");
   if(a.has("comparison") && !is_contour(type)) throw Usage_error("--comparison applies to --descriptor spin-contour or gsc");
   const shapecorr::Contour_comparison comparison = shapecorr::contour_comparison_from_string(a.get("comparison", "automatic"));
-  const std::size_t k = to_count(a.get("candidates", "1"), "--candidates");
-  if(k == 0) throw Usage_error("--candidates must be at least 1");
+  const std::size_t k = to_count(a.get("candidates", "1"), "--candidates", 1, 1000000);
   const Mesh source = read_mesh(a, 0), target = read_mesh(a, 1);
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<std::size_t> ids = source_points(source, a);
@@ -54,7 +53,9 @@ int run_match(const Args& a) {
   std::ofstream out = open_output(output);
   out.precision(9);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  std::size_t unmatched = 0;
   for(std::size_t i = 0; i < nearest.size(); ++i) {
+    unmatched += nearest[i].empty();
     for(const auto& n : nearest[i]) out << ids[i] << " " << n.target << " " << n.distance << "\n";
     if(!nearest[i].empty()) pairs.emplace_back(ids[i], nearest[i][0].target);
   }
@@ -65,7 +66,9 @@ int run_match(const Args& a) {
     const Descriptor_set all_source = compute_descriptor_set(source, all_ids(source.number_of_vertices()), type, a, target, "distance view (source)", &norm);
     write_values(prefix + "_source.ply", source, distances_from(all_source, all_source, v), {v});
     const std::vector<double> dt = distances_from(all_source, t, v);
-    const std::size_t best = static_cast<std::size_t>(std::min_element(dt.begin(), dt.end()) - dt.begin());
+    std::size_t best = 0; // the nearest target with a distance (an empty descriptor has none)
+    for(std::size_t j = 0; j < dt.size(); ++j)
+      if(std::isfinite(dt[j]) && (!std::isfinite(dt[best]) || dt[j] < dt[best])) best = j;
     write_values(prefix + "_target.ply", target, dt, {best});
     if(verbose(a))
       std::cerr << "match: distance to source vertex " << v << " -> " << prefix << "_source.ply, " << prefix << "_target.ply (marked: the nearest target vertex "
@@ -78,13 +81,20 @@ int run_match(const Args& a) {
               << std::chrono::duration<double>(t1 - t0).count() << " s, matching "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() << " s) -> " << output
               << (a.has("lines") ? " and " + a.get("lines") : std::string()) << "\n";
+  if(verbose(a) && is_contour(type)) {
+    auto empties = [](const Descriptor_set& d) {
+      return static_cast<std::size_t>(std::count_if(d.contours.begin(), d.contours.end(), [](const shapecorr::Spin_contour& c) { return c.empty(); }));
+    };
+    if(const std::size_t e = empties(t)) std::cerr << "note: " << e << " target vertices have an empty contour (no descriptor: a flat neighbourhood): never matched\n";
+    if(unmatched) std::cerr << "note: " << unmatched << " source points have no match (an empty contour, or only empty target contours): no line in " << output << "\n";
+  }
   return 0;
 }
 
 std::vector<Option> options() {
   std::vector<Option> o = {
       {"descriptor", "NAME", "hks, wks, sihks, spin-image, face-spin-image, spin-contour, improved-spin-image, gsc, geodesic-spin-image"},
-      {"output", "FILE", "'source_id target_id distance' lines (0-based), --candidates lines per source, nearest first"},
+      {"output", "FILE", "'source_id target_id distance' lines (0-based), up to --candidates lines per source, nearest first; none for a source without a descriptor (an empty contour)"},
       {"points", "N", "match N furthest-point samples of SOURCE (default 100)"},
       {"seed", "S", "seed of the sampling's start vertex (default 0)"},
       {"source-points", "FILE", "match these SOURCE vertex ids (whitespace-separated) instead"},

@@ -31,10 +31,10 @@ Spin_axis parse_axis(const std::string& s, const std::string& type) {
 // the extent of `reference` (the target when matching), the SHOT radius in mesh resolutions.
 std::unique_ptr<shapecorr::Spin_descriptors<Mesh>> make_spin(const Mesh& m, const Args& a, const std::string& type, const Mesh& reference) {
   const shapecorr::Spin_descriptors<Mesh> probe(reference);
-  const double support = to_double(a.get("support", "1.0"), "--support") * probe.extent();
-  const double central = to_double(a.get("central-radius", "0.1"), "--central-radius") * probe.extent();
-  const double lrf = to_double(a.get("lrf-radius", "30"), "--lrf-radius") * probe.mesh_resolution();
-  const std::size_t rows = to_count(a.get("rows", "120"), "--rows"), columns = to_count(a.get("columns", "60"), "--columns");
+  const double support = to_double(a.get("support", "1.0"), "--support", 0, 10, true) * probe.extent();
+  const double central = to_double(a.get("central-radius", "0.1"), "--central-radius", 0, 10, true) * probe.extent();
+  const double lrf = to_double(a.get("lrf-radius", "30"), "--lrf-radius", 0, 1e6, true) * probe.mesh_resolution();
+  const std::size_t rows = to_count(a.get("rows", "120"), "--rows", 1, max_bins), columns = to_count(a.get("columns", "60"), "--columns", 1, max_bins);
   return std::unique_ptr<shapecorr::Spin_descriptors<Mesh>>(new shapecorr::Spin_descriptors<Mesh>(
       m, SP::support_length(support).image_rows(rows).image_columns(columns).spin_axis(parse_axis(a.get("axis"), type))
              .central_radius(central).lrf_radius(lrf)));
@@ -64,8 +64,8 @@ std::function<void(std::size_t, std::size_t)> reporter(const Args& a, const std:
 std::unique_ptr<shapecorr::Geodesic_spin_descriptors<Mesh>> make_geodesic(const Mesh& m, const Args& a, shapecorr::Geodesic_spin_normalization* norm,
                                                                           const std::function<void(std::size_t, std::size_t)>& progress) {
   typedef shapecorr::Geodesic_spin_descriptors<Mesh> G;
-  const double support = to_double(a.get("support", "0.4"), "--support"), radius = to_double(a.get("agd-radius", "0.15"), "--agd-radius");
-  const std::size_t rows = to_count(a.get("rows", "64"), "--rows"), columns = to_count(a.get("columns", "64"), "--columns");
+  const double support = to_double(a.get("support", "0.4"), "--support", 0, 10, true), radius = to_double(a.get("agd-radius", "0.15"), "--agd-radius", 0, 1);
+  const std::size_t rows = to_count(a.get("rows", "64"), "--rows", 1, max_bins), columns = to_count(a.get("columns", "64"), "--columns", 1, max_bins);
   const auto np = SP::support_fraction(support).agd_radius_fraction(radius).image_rows(rows).image_columns(columns).progress_callback(progress);
   std::unique_ptr<G> g(new G(m, np.geodesic_spin_normalization(norm ? *norm : shapecorr::Geodesic_spin_normalization())));
   if(norm && norm->geodesic_diameter == 0) *norm = g->normalization();
@@ -112,10 +112,10 @@ Descriptor_set compute_descriptor_set(const Mesh& m, const std::vector<std::size
                                       const Mesh& reference, const std::string& label, shapecorr::Geodesic_spin_normalization* norm) {
   Descriptor_set s;
   if(is_spectral(type)) {
-    const std::size_t k = std::min<std::size_t>(to_count(a.get("eigenpairs", "300"), "--eigenpairs"), m.number_of_vertices());
+    const std::size_t k = std::min<std::size_t>(to_count(a.get("eigenpairs", "300"), "--eigenpairs", 1, 100000), m.number_of_vertices());
     const auto basis = shapecorr::compute_laplace_beltrami_eigenbasis(m, k);
     const Eigen::MatrixXd D = shapecorr::spectral_signature_matrix(basis, shapecorr::spectral_signature_from_string(type),
-                                                                   SP::number_of_scales(to_count(a.get("scales", "100"), "--scales")));
+                                                                   SP::number_of_scales(to_count(a.get("scales", "100"), "--scales", 1, 10000)));
     s.rows.resize(static_cast<Eigen::Index>(ids.size()), D.cols());
     for(std::size_t i = 0; i < ids.size(); ++i) s.rows.row(static_cast<Eigen::Index>(i)) = D.row(static_cast<Eigen::Index>(ids[i]));
     return s;

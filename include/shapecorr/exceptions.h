@@ -25,6 +25,7 @@ enum class Mesh_defect {
   empty_mesh,             ///< no vertex or no face
   non_triangle_face,      ///< a face with other than three vertices
   non_finite_coordinate,  ///< a NaN or infinite coordinate
+  coordinate_out_of_range, ///< a finite coordinate beyond `max_coordinate_magnitude` (1e38): lengths and areas would overflow
   degenerate_face,        ///< a face of (numerically) zero area, or with a repeated vertex
   non_manifold_edge,      ///< an edge shared by more than two faces, or orientations that disagree
   non_manifold_vertex,    ///< a vertex whose incident faces do not form a single fan
@@ -40,6 +41,7 @@ inline const char* to_string(Mesh_defect d) {
     case Mesh_defect::empty_mesh: return "empty_mesh";
     case Mesh_defect::non_triangle_face: return "non_triangle_face";
     case Mesh_defect::non_finite_coordinate: return "non_finite_coordinate";
+    case Mesh_defect::coordinate_out_of_range: return "coordinate_out_of_range";
     case Mesh_defect::degenerate_face: return "degenerate_face";
     case Mesh_defect::non_manifold_edge: return "non_manifold_edge";
     case Mesh_defect::non_manifold_vertex: return "non_manifold_vertex";

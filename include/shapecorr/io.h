@@ -5,6 +5,7 @@
 /// spin descriptor plots and correspondence lines. The top layer: no other module includes it.
 #ifndef SHAPECORR_IO_H
 #define SHAPECORR_IO_H
+#include <shapecorr/io/read_polygon_soup.h>
 #include <shapecorr/io/read_triangle_mesh.h>
 #include <shapecorr/io/write_colored_ply.h>
 #include <shapecorr/io/write_correspondences.h>

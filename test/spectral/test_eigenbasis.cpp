@@ -10,6 +10,9 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <limits>
 #include <fstream>
 
 namespace SP = shapecorr::parameters;
@@ -146,4 +149,77 @@ TEST_CASE("eigenbasis errors: k out of range, isolated vertex, solver failure", 
   hopeless.tolerance = 0;   // nothing ever converges to a zero tolerance
   hopeless.max_iterations = 2;
   CHECK_THROWS_AS(shapecorr::compute_laplace_beltrami_eigenbasis(big, 30, SP::eigensolver(hopeless)), shapecorr::Solver_failure);
+}
+
+namespace {
+std::string eigenbasis_load_error(const std::string& path) {
+  try {
+    shapecorr::Laplace_beltrami_eigenbasis::load(path);
+  } catch(const shapecorr::Invalid_input& e) {
+    CHECK(std::string(e.what()).find(path) != std::string::npos);
+    return e.what();
+  }
+  return "";
+}
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+void put_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes; }
+} // namespace
+
+TEST_CASE("regression 21.1: hostile eigenbasis files are typed errors, never a crash or NaN descriptors", "[spectral][eigenbasis][io][regression]") {
+  const std::string path = test::temp_path("test_eigenbasis_hostile.bin");
+  Eigen::VectorXd values(2), mass(3);
+  values << 0.0, 1.5;
+  mass << 0.5, 0.25, 0.25;
+  Eigen::MatrixXd vectors = Eigen::MatrixXd::Ones(3, 2);
+  const shapecorr::Laplace_beltrami_eigenbasis good(values, vectors, mass, 2.0);
+  good.save(path);
+  const std::string bytes = file_bytes(path);
+  CHECK(eigenbasis_load_error(path).empty());
+  // sizes that overflow 64-bit products (n k * 8 wraps) or exceed the file: no allocation, an error
+  for(std::uint64_t n : {std::uint64_t(1) << 61, std::uint64_t(0x2000000000000001ull), std::uint64_t(4), std::uint64_t(0)}) {
+    std::string b = bytes;
+    std::memcpy(&b[12], &n, 8);
+    put_bytes(path, b);
+    INFO("n = " << n);
+    CHECK_THAT(eigenbasis_load_error(path), Catch::Contains(n == 0 ? "1 <= k <= n" : "disagree with the file size"));
+  }
+  // a flipped bit anywhere in the payload: checksum
+  for(std::size_t at : {std::size_t(36), bytes.size() / 2, bytes.size() - 9}) {
+    std::string b = bytes;
+    b[at] = static_cast<char>(b[at] ^ 0x10);
+    put_bytes(path, b);
+    CHECK_THAT(eigenbasis_load_error(path), Catch::Contains("checksum mismatch"));
+  }
+  // every truncation
+  for(std::size_t cut = 0; cut < bytes.size(); ++cut) {
+    put_bytes(path, bytes.substr(0, cut));
+    CHECK_FALSE(eigenbasis_load_error(path).empty());
+  }
+  // version 1 and foreign files
+  put_bytes(path, "SCLBEIG1" + bytes.substr(8));
+  CHECK_THAT(eigenbasis_load_error(path), Catch::Contains("version 1"));
+  put_bytes(path, "OFF\n3 1 0\n");
+  CHECK_THAT(eigenbasis_load_error(path), Catch::Contains("not a ShapeCorr eigenbasis file"));
+  // valid checksums over invalid contents (written through save): NaN/inf eigenvalues, negative or
+  // unsorted ones, NaN masses, non-finite vectors
+  auto check_content = [&](Eigen::VectorXd v, Eigen::MatrixXd u, Eigen::VectorXd m, const char* expected) {
+    shapecorr::Laplace_beltrami_eigenbasis(v, u, m, 2.0).save(path);
+    CHECK_THAT(eigenbasis_load_error(path), Catch::Contains(expected));
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  check_content((Eigen::VectorXd(2) << 0.0, nan).finished(), vectors, mass, "eigenvalue 1 is not finite");
+  check_content((Eigen::VectorXd(2) << 0.0, inf).finished(), vectors, mass, "eigenvalue 1 is not finite");
+  check_content((Eigen::VectorXd(2) << -0.5, 1.0).finished(), vectors, mass, "eigenvalue 0 = -0.500000 is negative");
+  check_content((Eigen::VectorXd(2) << 1.0, 0.5).finished(), vectors, mass, "not ascending at 1");
+  check_content(values, vectors, (Eigen::VectorXd(3) << 0.5, nan, 0.25).finished(), "mass of vertex 1 is not a positive number");
+  Eigen::MatrixXd bad = vectors;
+  bad(2, 1) = nan;
+  check_content(values, bad, mass, "an eigenvector has a non-finite entry");
+  // a round-off negative zero eigenvalue is accepted
+  shapecorr::Laplace_beltrami_eigenbasis((Eigen::VectorXd(2) << -1e-12, 1.0).finished(), vectors, mass, 2.0).save(path);
+  CHECK(eigenbasis_load_error(path).empty());
+  std::remove(path.c_str());
 }

@@ -43,6 +43,9 @@ struct Descriptor_match {
   std::size_t target = 0;          ///< position of the nearest target descriptor
   double distance = std::numeric_limits<double>::infinity();        ///< its distance
   double second_distance = std::numeric_limits<double>::infinity(); ///< distance of the second nearest
+  /// False when no target has a finite distance to the source ("no descriptor": an empty spin
+  /// contour, say): then `target` means nothing and `distance` is infinite.
+  bool has_match() const { return std::isfinite(distance); }
   /// nearest / second-nearest distance (Lowe's ratio; 1 when undefined, e.g. a single target)
   double ratio() const {
     return second_distance > 0 && std::isfinite(second_distance) ? distance / second_distance : 1.0;
@@ -57,6 +60,9 @@ struct Descriptor_match {
 /// A functor that also offers `distance(s, t, bound)` (returning any value > bound once the
 /// distance is known to exceed it, as `Contour_l1_distance` does) is called that way with the
 /// current second-best distance: same matches, less work.
+/// Distances that are not finite (an empty descriptor against a non-empty one, e.g. the spin
+/// contour of a flat neighbourhood: "no descriptor") are skipped; a source with no finite
+/// distance to any target gets `has_match() == false`.
 template <typename SourceRange, typename TargetRange, typename Distance>
 std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, const TargetRange& targets, const Distance& distance,
                                                 unsigned threads = 0) {
@@ -69,6 +75,7 @@ std::vector<Descriptor_match> match_descriptors(const SourceRange& sources, cons
     for(std::size_t j = 0; j < t.size(); ++j) {
       // Only distances below the second best matter: functors with a bound may stop early.
       const double d = internal::bounded_distance(distance, *s[i], *t[j], m.second_distance, 0);
+      if(!std::isfinite(d)) continue;
       if(d < m.distance) {
         m.second_distance = m.distance;
         m.distance = d;
@@ -94,7 +101,9 @@ struct Descriptor_neighbor {
 /// them. Candidate lists for correspondence search (several plausible matches per point) rather
 /// than one match. Same distance functors and threads as `match_descriptors`; a functor with a
 /// bounded form is called with the current k-th distance (same result, less work). With `k = 2`,
-/// entries 0 and 1 are `match_descriptors`' nearest and second nearest.
+/// entries 0 and 1 are `match_descriptors`' nearest and second nearest. Targets at a distance that
+/// is not finite ("no descriptor", as in `match_descriptors`) are never candidates, so a row may be
+/// shorter than `min(k, targets.size())`, or empty.
 /// Cost: sources x targets distances, O(log k) bookkeeping each.
 /// \throws Invalid_argument when `k` is 0
 /// \code
@@ -119,6 +128,7 @@ std::vector<std::vector<Descriptor_neighbor>> k_nearest_descriptors(const Source
     for(std::size_t j = 0; j < t.size(); ++j) {
       const double bound = heap.size() < kk ? std::numeric_limits<double>::infinity() : heap.front().distance;
       const Descriptor_neighbor c{j, internal::bounded_distance(distance, *s[i], *t[j], bound, 0)};
+      if(!std::isfinite(c.distance)) continue;
       if(heap.size() < kk) {
         heap.push_back(c);
         std::push_heap(heap.begin(), heap.end(), before);

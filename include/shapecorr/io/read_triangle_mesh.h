@@ -5,15 +5,14 @@
 #define SHAPECORR_IO_READ_TRIANGLE_MESH_H
 
 #include <shapecorr/exceptions.h>
+#include <shapecorr/io/read_polygon_soup.h>
 #include <shapecorr/mesh/validate_mesh.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -37,63 +36,8 @@ struct Read_result {
   std::vector<std::string> repairs;  ///< the repairs applied, in words
 };
 
-namespace internal {
-/// Line (1-based) of the first "nan" or "inf" number token of a text file, 0 if none.
-inline std::size_t first_non_finite_token_line(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::size_t no = 0;
-  while(std::getline(in, line)) {
-    ++no;
-    if(no == 1 && line.find("binary") != std::string::npos) return 0;
-    std::string low = line;
-    for(char& c : low) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for(const char* tok : {"nan", "inf"}) {
-      std::size_t pos = low.find(tok);
-      while(pos != std::string::npos) {
-        const bool left = pos == 0 || low[pos - 1] == ' ' || low[pos - 1] == '\t' || low[pos - 1] == '-' || low[pos - 1] == '+';
-        if(left) return no;
-        pos = low.find(tok, pos + 1);
-      }
-    }
-  }
-  return 0;
-}
-} // namespace internal
-
 /// \ingroup PkgShapeCorrIO
-/// Reads a polygon soup (OFF, OBJ, PLY, STL) with CGAL's readers, turning every failure into a
-/// typed error: `unreadable_file` (missing, empty, malformed; the message says so), or
-/// `non_finite_coordinate` for a text file that spells a coordinate "nan" or "inf" (which CGAL's
-/// text readers cannot parse). No validation of the content: see `validate_polygon_soup()`.
-template <typename Point>
-void read_polygon_soup_checked(const std::string& path, std::vector<Point>& points,
-                               std::vector<std::vector<std::size_t>>& polygons) {
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if(!probe) throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot open the file");
-    probe.seekg(0, std::ios::end);
-    if(probe.tellg() <= 0) throw Invalid_input(Mesh_defect::unreadable_file, path + ": the file is empty");
-  }
-  points.clear();
-  polygons.clear();
-  bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
-  } catch(const std::exception& e) {
-    throw Invalid_input(Mesh_defect::unreadable_file, path + ": cannot parse (" + e.what() + ")");
-  }
-  if(!ok) {
-    if(const std::size_t line = internal::first_non_finite_token_line(path))
-      throw Invalid_input(Mesh_defect::non_finite_coordinate, path + ": non-finite coordinate (nan/inf) on line " + std::to_string(line));
-    throw Invalid_input(Mesh_defect::unreadable_file,
-                        path + ": cannot parse (unknown extension or malformed content after " + std::to_string(points.size()) +
-                            " vertices and " + std::to_string(polygons.size()) + " faces; OFF, OBJ, PLY, STL are read)");
-  }
-}
-
-/// \ingroup PkgShapeCorrIO
-/// Reads OFF, OBJ, PLY or STL (`CGAL::IO::read_polygon_soup`), validates the content, applies the
+/// Reads OFF, OBJ, PLY or STL (the strict readers of `read_polygon_soup()`), validates the content, applies the
 /// repairs `options` allow, and builds `tm`. Anything left wrong raises `Invalid_input` whose
 /// message names the file, the defect and its first place. Vertex order of the file is kept
 /// (except where `remove_isolated_vertices` compacts it).
@@ -105,11 +49,11 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
   Read_result result;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  read_polygon_soup_checked(path, points, polygons);
+  shapecorr::read_polygon_soup(path, points, polygons);
   result.report = validate_polygon_soup(points, polygons);
   const Mesh_report& r = result.report;
   const std::string ctx = path;
-  if(r.is_empty() || r.non_finite_vertices) require_valid(r, Mesh_requirements(), ctx);
+  if(r.is_empty() || r.non_finite_vertices || r.out_of_range_vertices) require_valid(r, Mesh_requirements(), ctx);
 
   if(options.remove_degenerate_faces && r.degenerate_faces) {
     std::vector<std::vector<std::size_t>> kept;
@@ -120,14 +64,14 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
   }
   if(options.remove_isolated_vertices) {
     std::vector<char> used(points.size(), 0);
-    for(const auto& f : polygons) for(std::size_t v : f) if(v < points.size()) used[v] = 1;
+    for(const auto& f : polygons) for(std::size_t v : f) used[v] = 1; // indices are below points.size(): validated
     std::vector<std::size_t> remap(points.size(), std::size_t(-1));
     std::vector<Point> kept;
     for(std::size_t i = 0; i < points.size(); ++i) if(used[i]) { remap[i] = kept.size(); kept.push_back(points[i]); }
     if(kept.size() != points.size()) {
       result.repairs.push_back("removed " + std::to_string(points.size() - kept.size()) + " isolated vertices");
       for(auto& f : polygons)
-        for(auto& v : f) v = v < remap.size() ? remap[v] : kept.size() + v; // out-of-range stays out of range
+        for(auto& v : f) v = remap[v];
       points.swap(kept);
     }
   }

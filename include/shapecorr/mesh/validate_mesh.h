@@ -24,6 +24,11 @@
 namespace shapecorr {
 
 /// \ingroup PkgShapeCorrMesh
+/// The largest coordinate magnitude a valid mesh may have. Beyond it squared lengths and squared
+/// areas (products of four coordinates) leave the double range; rescale such a mesh first.
+constexpr double max_coordinate_magnitude = 1e38;
+
+/// \ingroup PkgShapeCorrMesh
 /// What `validate_polygon_soup()` / `validate_mesh()` found. Counts, plus for each defect the
 /// first few places (vertex or face indices, 0-based) in `examples`.
 struct Mesh_report {
@@ -31,6 +36,7 @@ struct Mesh_report {
   std::size_t number_of_faces = 0;       ///< faces in the input
   std::size_t non_triangle_faces = 0;    ///< faces with other than three vertices
   std::size_t non_finite_vertices = 0;   ///< vertices with a NaN or infinite coordinate
+  std::size_t out_of_range_vertices = 0; ///< vertices with a finite coordinate of magnitude > `max_coordinate_magnitude`
   std::size_t degenerate_faces = 0;       ///< repeated vertex or area <= 1e-14 * bbox diagonal^2
   std::size_t non_manifold_edges = 0;     ///< edges with > 2 faces or two faces of equal orientation
   std::size_t non_manifold_vertices = 0;  ///< vertices whose faces form several fans
@@ -50,7 +56,7 @@ struct Mesh_report {
   /// coordinates, no degenerate face, manifold, no isolated vertex. Boundaries and several
   /// components are allowed (see `Mesh_requirements`).
   bool is_valid() const {
-    return !is_empty() && non_triangle_faces == 0 && non_finite_vertices == 0 && degenerate_faces == 0 &&
+    return !is_empty() && non_triangle_faces == 0 && non_finite_vertices == 0 && out_of_range_vertices == 0 && degenerate_faces == 0 &&
            non_manifold_edges == 0 && non_manifold_vertices == 0 && isolated_vertices == 0;
   }
   /// Multi-line, human-readable summary.
@@ -58,7 +64,7 @@ struct Mesh_report {
     std::ostringstream o;
     o << "vertices: " << number_of_vertices << "\nfaces: " << number_of_faces << "\nconnected components: "
       << connected_components << "\nboundary edges: " << boundary_edges << "\nnon-triangle faces: " << non_triangle_faces
-      << "\nnon-finite vertices: " << non_finite_vertices << "\ndegenerate faces: " << degenerate_faces
+      << "\nnon-finite vertices: " << non_finite_vertices << "\nout-of-range vertices: " << out_of_range_vertices << "\ndegenerate faces: " << degenerate_faces
       << "\nnon-manifold edges: " << non_manifold_edges << "\nnon-manifold vertices: " << non_manifold_vertices
       << "\nisolated vertices: " << isolated_vertices << "\narea: " << area << "\nmean edge length: " << mean_edge_length
       << "\nbounding box diagonal: " << bbox_diagonal << "\nvalid: " << (is_valid() ? "yes" : "no") << "\n";
@@ -119,6 +125,7 @@ Mesh_report validate_polygon_soup(const PointRange& points, const PolygonRange& 
     if(r.examples.count(d) == 0) r.examples[d] = where;
   };
   std::vector<std::array<double, 3>> P(n);
+  std::vector<char> unusable(n, 0); // a non-finite or out-of-range coordinate: reported once, as such
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for(std::size_t i = 0; i < n; ++i) {
     const auto& p = points[i];
@@ -126,11 +133,18 @@ Mesh_report validate_polygon_soup(const PointRange& points, const PolygonRange& 
     if(!(std::isfinite(P[i][0]) && std::isfinite(P[i][1]) && std::isfinite(P[i][2]))) {
       ++r.non_finite_vertices;
       note(Mesh_defect::non_finite_coordinate, "vertex " + std::to_string(i));
+      unusable[i] = 1;
+      continue;
+    }
+    if(std::max({std::abs(P[i][0]), std::abs(P[i][1]), std::abs(P[i][2])}) > max_coordinate_magnitude) {
+      ++r.out_of_range_vertices;
+      note(Mesh_defect::coordinate_out_of_range, "vertex " + std::to_string(i));
+      unusable[i] = 1;
       continue;
     }
     for(int k = 0; k < 3; ++k) { lo[k] = std::min(lo[k], P[i][static_cast<std::size_t>(k)]); hi[k] = std::max(hi[k], P[i][static_cast<std::size_t>(k)]); }
   }
-  if(n > r.non_finite_vertices)
+  if(n > r.non_finite_vertices + r.out_of_range_vertices)
     r.bbox_diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
 
   std::vector<char> used(n, 0);
@@ -162,11 +176,14 @@ Mesh_report validate_polygon_soup(const PointRange& points, const PolygonRange& 
     std::vector<std::size_t> sorted = f;
     std::sort(sorted.begin(), sorted.end());
     const bool repeated = f.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
-    const double area = internal::polygon_area(points, f);
-    if(internal::is_degenerate_polygon(points, f, r.bbox_diagonal)) {
-      if(std::isfinite(area) || repeated) { // faces with a non-finite vertex are reported as such
+    const bool unusable_corner = std::any_of(f.begin(), f.end(), [&](std::size_t v) { return unusable[v] != 0; });
+    const double area = unusable_corner ? 0.0 : internal::polygon_area(points, f);
+    if(unusable_corner) {
+      // the corner is reported as non-finite or out of range; its area and edges would not be finite
+    } else if(internal::is_degenerate_polygon(points, f, r.bbox_diagonal)) {
+      if(std::isfinite(area) || repeated) {
         ++r.degenerate_faces;
-        note(Mesh_defect::degenerate_face, where + (repeated ? " repeats a vertex" : " has zero area"));
+        note(Mesh_defect::degenerate_face, where + (f.size() < 3 ? " has only " + std::to_string(f.size()) + " vertices" : repeated ? " repeats a vertex" : " has zero area"));
       }
     } else {
       r.area += area;
@@ -176,7 +193,7 @@ Mesh_report validate_polygon_soup(const PointRange& points, const PolygonRange& 
       if(a == b) continue;
       const double len = std::sqrt((P[a][0] - P[b][0]) * (P[a][0] - P[b][0]) + (P[a][1] - P[b][1]) * (P[a][1] - P[b][1]) +
                                    (P[a][2] - P[b][2]) * (P[a][2] - P[b][2]));
-      if(std::isfinite(len)) { edge_sum += len; ++edge_count; }
+      if(!unusable[a] && !unusable[b] && std::isfinite(len)) { edge_sum += len; ++edge_count; }
       const int orient = a < b ? 1 : -1;
       auto& e = edges[std::make_pair(std::min(a, b), std::max(a, b))];
       e.first += 1;
@@ -277,7 +294,7 @@ Mesh_report validate_mesh(const PolygonMesh& pm, const NamedParameters& np = CGA
 /// \ingroup PkgShapeCorrMesh
 /// Throws `Invalid_input` naming the first defect of `report` that `requirements` forbid, with
 /// `context` (a file name, an algorithm) in front of the message. Checked in this order: empty,
-/// non-finite, non-triangle, degenerate, non-manifold edge, non-manifold vertex, isolated vertex,
+/// non-finite, out-of-range coordinate, non-triangle, degenerate, non-manifold edge, non-manifold vertex, isolated vertex,
 /// boundary (if `closed`), several components (if `connected`).
 inline void require_valid(const Mesh_report& r, const Mesh_requirements& req = Mesh_requirements(),
                           const std::string& context = "mesh") {
@@ -291,6 +308,8 @@ inline void require_valid(const Mesh_report& r, const Mesh_requirements& req = M
     throw Invalid_input(Mesh_defect::empty_mesh, context + ": empty mesh (" + std::to_string(r.number_of_vertices) +
                                                      " vertices, " + std::to_string(r.number_of_faces) + " faces)");
   if(r.non_finite_vertices) fail(Mesh_defect::non_finite_coordinate, r.non_finite_vertices, "vertices with NaN or infinite coordinates");
+  if(r.out_of_range_vertices)
+    fail(Mesh_defect::coordinate_out_of_range, r.out_of_range_vertices, "vertices with a coordinate beyond 1e38 in magnitude (rescale the mesh)");
   if(r.non_triangle_faces) fail(Mesh_defect::non_triangle_face, r.non_triangle_faces, "faces are not triangles");
   if(r.degenerate_faces) fail(Mesh_defect::degenerate_face, r.degenerate_faces, "degenerate faces");
   if(r.non_manifold_edges) fail(Mesh_defect::non_manifold_edge, r.non_manifold_edges, "non-manifold edges");

@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -64,54 +65,108 @@ public:
     return z;
   }
 
-  /// Writes the basis to a binary file (native-endian; header "SCLBEIG1", n, k, operator scale, eigenvalues, mass, eigenvectors column-major).
+  /// Writes the basis to a binary file, format version 2 (native byte order, marked):
+  /// "SCLBEIG2", the 32-bit byte-order mark 0x01020304, n and k (64-bit), the operator scale,
+  /// the k eigenvalues, the n masses, the n x k eigenvectors column-major (doubles), and the
+  /// 64-bit FNV-1a checksum of everything before it.
   /// \throws Output_error when the file cannot be written
   void save(const std::string& path) const {
     std::ofstream out(path, std::ios::binary);
     if(!out) throw Output_error("eigenbasis: cannot write '" + path + "'");
     const std::uint64_t n = number_of_vertices(), k = number_of_eigenpairs();
-    out.write(magic(), 8);
-    out.write(reinterpret_cast<const char*>(&n), sizeof n);
-    out.write(reinterpret_cast<const char*>(&k), sizeof k);
-    out.write(reinterpret_cast<const char*>(&m_scale), sizeof m_scale);
-    out.write(reinterpret_cast<const char*>(m_values.data()), static_cast<std::streamsize>(sizeof(double) * k));
-    out.write(reinterpret_cast<const char*>(m_mass.data()), static_cast<std::streamsize>(sizeof(double) * n));
-    out.write(reinterpret_cast<const char*>(m_vectors.data()), static_cast<std::streamsize>(sizeof(double) * n * k));
+    const std::uint32_t order = byte_order_mark;
+    std::uint64_t hash = fnv_offset;
+    auto put = [&](const void* data, std::uint64_t bytes) {
+      out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
+      hash = fnv1a(hash, data, bytes);
+    };
+    put(magic(), 8);
+    put(&order, sizeof order);
+    put(&n, sizeof n);
+    put(&k, sizeof k);
+    put(&m_scale, sizeof m_scale);
+    put(m_values.data(), sizeof(double) * k);
+    put(m_mass.data(), sizeof(double) * n);
+    put(m_vectors.data(), sizeof(double) * n * k);
+    out.write(reinterpret_cast<const char*>(&hash), sizeof hash);
     if(!out) throw Output_error("eigenbasis: writing '" + path + "' failed");
   }
 
-  /// Reads a basis written by `save`.
-  /// \throws Invalid_input (`unreadable_file`) for a missing, truncated or foreign file
+  /// Reads a basis written by `save` and checks it: format version, byte order, sizes against the
+  /// file size (before allocating), checksum, eigenvalues finite, ascending and non-negative (down
+  /// to -1e-8 times the operator scale, round-off of a zero eigenvalue), eigenvectors finite,
+  /// masses finite and positive, operator scale finite and positive.
+  /// \throws Invalid_input (`unreadable_file`) naming the file and the first problem found
   static Laplace_beltrami_eigenbasis load(const std::string& path) {
+    auto fail = [&](const std::string& why) -> void {
+      throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: '" + path + "': " + why);
+    };
     std::ifstream in(path, std::ios::binary);
-    if(!in) throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: cannot open '" + path + "'");
-    char head[8];
-    std::uint64_t n = 0, k = 0;
-    in.read(head, 8);
-    in.read(reinterpret_cast<char*>(&n), sizeof n);
-    in.read(reinterpret_cast<char*>(&k), sizeof k);
-    double scale = 0;
-    in.read(reinterpret_cast<char*>(&scale), sizeof scale);
-    if(!in || std::memcmp(head, magic(), 8) != 0)
-      throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: '" + path + "' is not a ShapeCorr eigenbasis file");
+    if(!in) fail("cannot open the file");
     in.seekg(0, std::ios::end);
-    const auto size = static_cast<std::uint64_t>(in.tellg());
-    const std::uint64_t expected = 8 + 2 * sizeof(std::uint64_t) + sizeof(double) * (1 + k + n + n * k);
-    if(n == 0 || k == 0 || k > n || size != expected)
-      throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: '" + path + "' is truncated or corrupt (" + std::to_string(size) +
-                                                            " bytes for n = " + std::to_string(n) + ", k = " + std::to_string(k) + ")");
-    in.seekg(8 + 2 * sizeof(std::uint64_t) + sizeof(double));
+    const std::streamoff end = in.tellg();
+    if(end < 0) fail("cannot determine the file size (not a regular file?)");
+    const std::uint64_t size = static_cast<std::uint64_t>(end);
+    in.seekg(0);
+    const std::uint64_t header = 8 + 4 + 8 + 8 + 8, trailer = 8;
+    char head[8] = {0};
+    std::uint32_t order = 0;
+    std::uint64_t n = 0, k = 0;
+    double scale = 0;
+    in.read(head, 8);
+    if(!in || std::memcmp(head, "SCLBEIG", 7) != 0) fail("not a ShapeCorr eigenbasis file");
+    if(head[7] == '1') fail("format version 1 (no checksum), no longer read: compute the basis again and save it");
+    if(head[7] != magic()[7]) fail(std::string("format version '") + head[7] + "' (this build reads version 2)");
+    std::uint64_t hash = fnv1a(fnv_offset, head, 8);
+    auto get = [&](void* data, std::uint64_t bytes) {
+      in.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
+      if(!in) fail("truncated");
+      hash = fnv1a(hash, data, bytes);
+    };
+    if(size < header + trailer) fail("truncated: " + std::to_string(size) + " bytes, shorter than the header");
+    get(&order, sizeof order);
+    if(order != byte_order_mark) fail("written on a machine of the other byte order");
+    get(&n, sizeof n);
+    get(&k, sizeof k);
+    get(&scale, sizeof scale);
+    // sizes by division: n + k + n k doubles must fill exactly the bytes between header and trailer
+    const std::uint64_t doubles = (size - header - trailer) / sizeof(double);
+    const std::string counts = " (n = " + std::to_string(n) + " vertices, k = " + std::to_string(k) + " eigenpairs, " + std::to_string(size) + " bytes)";
+    if(n == 0 || k == 0 || k > n) fail("bad sizes" + counts + ": 1 <= k <= n is required");
+    if(n > doubles || k > doubles / n || n * k > doubles - n || k > doubles - n - n * k ||
+       header + trailer + sizeof(double) * (n + k + n * k) != size)
+      fail("the sizes disagree with the file size" + counts);
+    if(!(std::isfinite(scale) && scale > 0)) fail("operator scale " + std::to_string(scale) + " is not a positive number");
     Eigen::VectorXd values(static_cast<Eigen::Index>(k)), mass(static_cast<Eigen::Index>(n));
     Eigen::MatrixXd vectors(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
-    in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(sizeof(double) * k));
-    in.read(reinterpret_cast<char*>(mass.data()), static_cast<std::streamsize>(sizeof(double) * n));
-    in.read(reinterpret_cast<char*>(vectors.data()), static_cast<std::streamsize>(sizeof(double) * n * k));
-    if(!in) throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: reading '" + path + "' failed");
+    get(values.data(), sizeof(double) * k);
+    get(mass.data(), sizeof(double) * n);
+    get(vectors.data(), sizeof(double) * n * k);
+    std::uint64_t stored = 0;
+    in.read(reinterpret_cast<char*>(&stored), sizeof stored);
+    if(!in) fail("truncated");
+    if(stored != hash) fail("checksum mismatch (the file is corrupt)");
+    for(Eigen::Index i = 0; i < values.size(); ++i) {
+      const double v = values[i];
+      if(!std::isfinite(v)) fail("eigenvalue " + std::to_string(i) + " is not finite");
+      if(v < -1e-8 * scale) fail("eigenvalue " + std::to_string(i) + " = " + std::to_string(v) + " is negative");
+      if(i > 0 && v < values[i - 1]) fail("eigenvalues not ascending at " + std::to_string(i));
+    }
+    for(Eigen::Index i = 0; i < mass.size(); ++i)
+      if(!(std::isfinite(mass[i]) && mass[i] > 0)) fail("mass of vertex " + std::to_string(i) + " is not a positive number");
+    if(!vectors.allFinite()) fail("an eigenvector has a non-finite entry");
     return Laplace_beltrami_eigenbasis(std::move(values), std::move(vectors), std::move(mass), scale);
   }
 
 private:
-  static const char* magic() { return "SCLBEIG1"; }
+  static const char* magic() { return "SCLBEIG2"; }
+  static constexpr std::uint32_t byte_order_mark = 0x01020304u;
+  static constexpr std::uint64_t fnv_offset = 14695981039346656037ull;
+  static std::uint64_t fnv1a(std::uint64_t h, const void* data, std::uint64_t bytes) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for(std::uint64_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    return h;
+  }
   Eigen::VectorXd m_values;
   Eigen::MatrixXd m_vectors;
   Eigen::VectorXd m_mass;

@@ -293,6 +293,14 @@ struct Contour_workspace {
   }
 };
 
+/// x converted to long within [lo, hi]: NaN and values below lo give lo, values above hi give hi
+/// (a plain conversion of an infinite or out-of-range double is undefined behaviour).
+inline long clamped_to_long(double x, long lo, long hi) {
+  if(!(x >= static_cast<double>(lo))) return lo;
+  if(!(x <= static_cast<double>(hi))) return hi;
+  return static_cast<long>(x);
+}
+
 /// The walk's seeds by descent, for a row coordinate t given at the vertices of `ball` ((vertex,
 /// distance) pairs; records in `ws.vx`, and rounded to float in `tf`; every other vertex at t =
 /// `outside`, above every row) on a topological sphere: a seed (r, f) for every vertex x and row r strictly between t at
@@ -480,8 +488,10 @@ void finish_level_set_contour(const S& s, std::size_t R, std::size_t cols, doubl
     };
     for(const auto& seg : ws.merged[r]) {
       ws.row.push_back(static_cast<float>(seg.first / alpha_scale));
-      const long c0 = std::max(0L, static_cast<long>(std::ceil(seg.first / dc - 0.5)));
-      const long c1 = std::min(static_cast<long>(cols) - 1, static_cast<long>(std::floor(seg.second / dc - 0.5)));
+      // column range of the segment, clamped before the integer conversion (an infinite or NaN
+      // quotient, dc = 0 on a flat neighbourhood, gives an empty range instead of undefined behaviour)
+      const long c0 = clamped_to_long(std::ceil(seg.first / dc - 0.5), 0, static_cast<long>(cols));
+      const long c1 = clamped_to_long(std::floor(seg.second / dc - 0.5), -1, static_cast<long>(cols) - 1);
       for(long k = c0; k <= c1; ++k) {
         const double a = (static_cast<double>(k) + 0.5) * dc;
         const bool in_above = contains(above, ia, a), in_below = contains(below, ib, a);
