@@ -32,6 +32,14 @@ if(SHAPECORR_BUILDING_PROJECT)
   if(NOT Boost_FOUND)
     list(APPEND _shapecorr_missing "Boost (libboost-dev, libboost-graph-dev)")
   endif()
+  # OpenMesh: not a dependency of the library; the tests run every generic function over its
+  # TriMesh (a mesh type outside namespace CGAL), and one example uses it.
+  if(SHAPECORR_BUILD_TESTS OR SHAPECORR_BUILD_EXAMPLES)
+    find_package(OpenMesh QUIET)
+    if(SHAPECORR_BUILD_TESTS AND NOT TARGET OpenMeshCore)
+      list(APPEND _shapecorr_missing "OpenMesh (libopenmesh-dev), for the tests")
+    endif()
+  endif()
   if(_shapecorr_missing)
     list(JOIN _shapecorr_missing ", " _shapecorr_missing)
     message(FATAL_ERROR "ShapeCorr: missing ${_shapecorr_missing}. On Debian 12, scripts/setup installs "

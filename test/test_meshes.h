@@ -1,5 +1,10 @@
 // Shared helpers of the test suite: the mesh types every generic algorithm is run over, and
 // access to ../shared/data (tests that need it skip when it is absent).
+//
+// Every TEMPLATE_LIST_TEST_CASE of a public generic function runs over `test::Mesh_types`: CGAL's
+// Surface_mesh and Polyhedron_3, and OpenMesh's TriMesh, a type outside namespace CGAL (a call that
+// only argument-dependent lookup finds in namespace CGAL does not compile for it). OpenMesh stores
+// float coordinates: `test::coordinate_epsilon<Mesh>()` is the relative precision of a mesh type.
 #ifndef SHAPECORR_TEST_TEST_MESHES_H
 #define SHAPECORR_TEST_TEST_MESHES_H
 
@@ -9,12 +14,19 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
+
 #include <Eigen/Core>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -25,6 +37,18 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
+typedef OpenMesh::TriMesh_ArrayKernelT<> OpenMesh_mesh;
+
+/// The mesh types of the typed tests (TEMPLATE_LIST_TEST_CASE(name, tags, test::Mesh_types)).
+typedef std::tuple<Surface_mesh, Polyhedron, OpenMesh_mesh> Mesh_types;
+
+/// Relative precision of the coordinates a mesh type stores: the machine epsilon of double for
+/// CGAL's types, of float for OpenMesh's default traits.
+template <typename Mesh>
+constexpr double coordinate_epsilon() {
+  return std::is_same<Mesh, OpenMesh_mesh>::value ? double(std::numeric_limits<float>::epsilon())
+                                                  : std::numeric_limits<double>::epsilon();
+}
 
 /// ../shared/data (or $SHAPECORR_DATA); empty when absent.
 inline std::string data_dir() {

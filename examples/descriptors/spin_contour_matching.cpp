@@ -1,7 +1,8 @@
 // Rigid descriptors (thesis chapter 3): Spin Contours of every vertex through a property map,
 // matched between a shape and a rigidly moved copy; the face-based spin image of one vertex with
 // sampled and with exact areas, and its picture beside the Spin Contour (the thesis's Figure 3.3).
-// Usage: example_spin_contour_matching [MESH] (default: a generated bumpy sphere)
+// Usage: example_spin_contour_matching [MESH] (default: a generated bumpy sphere).
+// Writes spin_descriptors_vertex0.png into the current folder (and says so).
 #include <shapecorr/descriptors.h>
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
@@ -11,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <vector>
 
@@ -75,5 +77,5 @@ int main(int argc, char** argv) {
   std::cout << "area " << CGAL::Polygon_mesh_processing::area(a) << "; in the images of vertex 0: " << sum_sampled << " (sampled), "
             << sum_exact << " (exact); correlation of the two " << shapecorr::spin_image_correlation(sampled, exact).first << "\n";
   shapecorr::write_spin_descriptor_plot("spin_descriptors_vertex0.png", exact, sd.spin_contour(op));
-  std::cout << "wrote spin_descriptors_vertex0.png (the exact face-based image and the Spin Contour)\n";
+  std::cout << "wrote " << std::filesystem::absolute("spin_descriptors_vertex0.png").string() << " (the exact face-based image and the Spin Contour)\n";
 }

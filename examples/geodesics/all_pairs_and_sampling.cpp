@@ -1,6 +1,7 @@
 // All-pairs geodesic distances, the diameter, furthest point samples and the local average
 // geodesic distance of a mesh.
-// Usage: example_all_pairs_and_sampling [MESH] (default: a generated sphere)
+// Usage: example_all_pairs_and_sampling [MESH] (default: a generated sphere).
+// Writes local_agd.ply into the current folder (and says so).
 #include <shapecorr/geodesics.h>
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
@@ -9,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <filesystem>
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -42,5 +44,5 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> highlight;
   for(vertex_descriptor v : samples) highlight.push_back(v.idx());
   shapecorr::write_colored_ply("local_agd.ply", mesh, values, highlight);
-  std::cout << "wrote local_agd.ply: local agd (r = 0.15 D), samples in red\n";
+  std::cout << "wrote " << std::filesystem::absolute("local_agd.ply").string() << ": local agd (r = 0.15 D), samples in red\n";
 }

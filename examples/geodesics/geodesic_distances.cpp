@@ -1,5 +1,6 @@
 // Geodesic distances from one vertex of a mesh with the three engines, written as coloured PLY.
-// Usage: example_geodesic_distances [MESH] (default: a generated torus)
+// Usage: example_geodesic_distances [MESH] (default: a generated torus).
+// Writes geodesic_distances.ply into the current folder (and says so).
 #include <shapecorr/geodesics.h>
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
@@ -7,6 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <filesystem>
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -38,5 +40,5 @@ int main(int argc, char** argv) {
   std::vector<double> values;
   for(vertex_descriptor v : vertices(mesh)) values.push_back(distance[v]);
   shapecorr::write_colored_ply("geodesic_distances.ply", mesh, values, {0});
-  std::cout << "wrote geodesic_distances.ply (open it in MeshLab)\n";
+  std::cout << "wrote " << std::filesystem::absolute("geodesic_distances.ply").string() << " (open it in MeshLab)\n";
 }

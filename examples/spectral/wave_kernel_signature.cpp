@@ -1,6 +1,7 @@
 // Laplace-Beltrami eigenbasis, WKS and HKS of a mesh; the WKS distance of every vertex to one vertex,
 // written as a coloured PLY (the view of the thesis's Figure 4.6).
-// Usage: example_wave_kernel_signature [MESH [VERTEX]] (default: a generated torus, vertex 0)
+// Usage: example_wave_kernel_signature [MESH [VERTEX]] (default: a generated torus, vertex 0).
+// Writes basis.eig and wks_distance.ply into the current folder (and says so).
 #include <shapecorr/io.h>
 #include <shapecorr/mesh/primitives.h>
 #include <shapecorr/spectral.h>
@@ -9,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <vector>
 
@@ -24,9 +26,17 @@ int main(int argc, char** argv) {
 
   // One eigen-solve (Spectra, shift-invert), shared by every descriptor.
   const std::size_t k = std::min<std::size_t>(300, mesh.number_of_vertices() / 2);
-  const shapecorr::Laplace_beltrami_eigenbasis basis = shapecorr::compute_laplace_beltrami_eigenbasis(mesh, k);
-  std::cout << k << " eigenpairs, lambda_2 = " << basis.eigenvalues()[1]
-            << ", lambda_k = " << basis.eigenvalues()[static_cast<Eigen::Index>(k - 1)] << "\n";
+  //! [eigenbasis]
+  shapecorr::Laplace_beltrami_eigenbasis basis =
+      shapecorr::compute_laplace_beltrami_eigenbasis(mesh, k);   // k smallest pairs of L phi = lambda M phi
+  const Eigen::VectorXd& lambda = basis.eigenvalues();          // k, ascending
+  const Eigen::MatrixXd& phi = basis.eigenvectors();            // n x k, M-orthonormal: Phi^T M Phi = I
+  basis.save("basis.eig");                                      // binary, checked when read back
+  const auto again = shapecorr::Laplace_beltrami_eigenbasis::load("basis.eig");
+  //! [eigenbasis]
+  std::cout << k << " eigenpairs, lambda_2 = " << lambda[1] << ", lambda_k = " << lambda[static_cast<Eigen::Index>(k - 1)]
+            << "; Phi is " << phi.rows() << " x " << phi.cols() << "; wrote " << std::filesystem::absolute("basis.eig").string()
+            << " and read it back (" << again.number_of_eigenpairs() << " pairs)\n";
 
   auto wks = mesh.add_property_map<vertex_descriptor, std::vector<double>>("v:wks").first;
   auto hks = mesh.add_property_map<vertex_descriptor, std::vector<double>>("v:hks").first;
@@ -39,7 +49,9 @@ int main(int argc, char** argv) {
     distance.push_back(shapecorr::spectral_descriptor_distance(wks[v], wks[source]));
     if(v != source && shapecorr::spectral_descriptor_distance(hks[v], hks[source]) < 1e-3) ++closer;
   }
-  std::cout << closer << " vertices have an HKS within 1e-3 of vertex " << static_cast<std::size_t>(source) << "'s" << (argc > 1 ? "\n" : " (the torus has a 64-fold rotational symmetry)\n");
+  std::cout << closer << " vertices have an HKS within 1e-3 of vertex " << static_cast<std::size_t>(source) << "'s"
+            << (argc > 1 ? "\n" : " (on the default torus: the vertices of its ring, by its 64-fold rotational symmetry)\n");
   shapecorr::write_colored_ply("wks_distance.ply", mesh, distance, {static_cast<std::size_t>(source)});
-  std::cout << "wrote wks_distance.ply (WKS distance to vertex " << static_cast<std::size_t>(source) << "; open it in MeshLab)\n";
+  std::cout << "wrote " << std::filesystem::absolute("wks_distance.ply").string() << " (WKS distance to vertex "
+            << static_cast<std::size_t>(source) << ", marked red; open it in MeshLab)\n";
 }

@@ -48,7 +48,7 @@ void bumpy_torus_soup(std::vector<std::array<double, 3>>& P, std::vector<std::ar
   for(auto f : t.faces()) {
     std::array<std::size_t, 3> tri;
     int k = 0;
-    for(auto v : vertices_around_face(t.halfedge(f), t)) tri[static_cast<std::size_t>(k++)] = v.idx();
+    for(auto v : CGAL::vertices_around_face(t.halfedge(f), t)) tri[static_cast<std::size_t>(k++)] = v.idx();
     T.push_back(tri);
   }
 }
@@ -77,7 +77,7 @@ void legged_sphere_soup(std::vector<std::array<double, 3>>& P, std::vector<std::
   for(auto f : s.faces()) {
     std::array<std::size_t, 3> tri;
     int k = 0;
-    for(auto v : vertices_around_face(s.halfedge(f), s)) tri[static_cast<std::size_t>(k++)] = v.idx();
+    for(auto v : CGAL::vertices_around_face(s.halfedge(f), s)) tri[static_cast<std::size_t>(k++)] = v.idx();
     T.push_back(tri);
   }
 }
@@ -121,7 +121,7 @@ std::size_t rows_with_gaps(const shapecorr::Spin_contour& c, double column) {
 
 } // namespace
 
-TEMPLATE_TEST_CASE("GSC is invariant under an exact isometry: a flat and a rolled strip", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("GSC is invariant under an exact isometry: a flat and a rolled strip", "[descriptors][gsc]", test::Mesh_types) {
   TestType flat, rolled;
   make_strip(flat, 60, 15, 4.0, 1.0, 0.0);
   make_strip(rolled, 60, 15, 4.0, 1.0, 1.0); // rolled into a half cylinder
@@ -150,7 +150,7 @@ TEMPLATE_TEST_CASE("GSC is invariant under an exact isometry: a flat and a rolle
   }
 }
 
-TEMPLATE_TEST_CASE("GSC is invariant under vertex renumbering", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("GSC is invariant under vertex renumbering", "[descriptors][gsc]", test::Mesh_types) {
   std::vector<std::array<double, 3>> P, P2;
   std::vector<std::array<std::size_t, 3>> T, T2;
   bumpy_torus_soup(P, T);
@@ -175,7 +175,7 @@ TEMPLATE_TEST_CASE("GSC is invariant under vertex renumbering", "[descriptors][g
   }
 }
 
-TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("a local GSC does not change when far-away parts are deleted", "[descriptors][gsc]", test::Mesh_types) {
   // A long strip; P near the left end; everything beyond x = 5 removed in the cut copy.
   const int nx = 120, ny = 10;
   const double W = 12.0, H = 1.0;
@@ -211,7 +211,7 @@ TEMPLATE_TEST_CASE("a local GSC does not change when far-away parts are deleted"
   CHECK(shapecorr::contour_l1_distance(hw.geodesic_spin_contour(vw[6]), hc.geodesic_spin_contour(vc[6])) > 0.01);
 }
 
-TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geodesic spin image", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("the fast GSC construction agrees with the contour of the geodesic spin image", "[descriptors][gsc]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 3);
   test::transform_points(m, [](const Eigen::Vector3d& p) {
@@ -236,7 +236,7 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
     for(auto f : faces(m)) {
       std::array<std::size_t, 3> c;
       int k = 0;
-      for(auto v : vertices_around_face(halfedge(f, m), m)) c[static_cast<std::size_t>(k++)] = get(vim, v);
+      for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) c[static_cast<std::size_t>(k++)] = get(vim, v);
       for(int i = 0; i <= N; ++i)
         for(int j = 0; i + j <= N; ++j) {
           const double u = double(i) / N, w = double(j) / N, z = 1 - u - w;
@@ -270,7 +270,7 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
     std::size_t owned = 0; // faces whose corner of smallest index is in the ball: the disc's face list
     for(auto f : faces(m)) {
       std::size_t lo = vs.size();
-      for(auto v : vertices_around_face(halfedge(f, m), m)) lo = std::min(lo, static_cast<std::size_t>(get(vim, v)));
+      for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) lo = std::min(lo, static_cast<std::size_t>(get(vim, v)));
       owned += in_ball[lo];
     }
     REQUIRE(3 * owned > num_faces(m) + 8);
@@ -285,8 +285,7 @@ TEMPLATE_TEST_CASE("the fast GSC construction agrees with the contour of the geo
   }
 }
 
-TEMPLATE_TEST_CASE("workspaces: one per thread gives the shared workspace's contours; another object's is refused", "[descriptors][gsc]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("workspaces: one per thread gives the shared workspace's contours; another object's is refused", "[descriptors][gsc]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 3);
   test::transform_points(m, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(1.2 * p.x(), p.y() + 0.1 * p.x() * p.x(), 0.8 * p.z()); });
@@ -305,7 +304,7 @@ TEMPLATE_TEST_CASE("workspaces: one per thread gives the shared workspace's cont
   CHECK(other.geodesic_spin_contour(vs[0], foreign).points() == shared[0].points());
 }
 
-TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("geodesic spin images, batch functions and property maps", "[descriptors][gsc]", test::Mesh_types) {
   TestType flat, rolled;
   make_strip(flat, 40, 10, 4.0, 1.0, 0.0);
   make_strip(rolled, 40, 10, 4.0, 1.0, 1.0);
@@ -336,7 +335,7 @@ TEMPLATE_TEST_CASE("geodesic spin images, batch functions and property maps", "[
   CHECK_THROWS_AS(shapecorr::contour_l1_distance(rigid, batch[0]), shapecorr::Invalid_argument);
 }
 
-TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are unchanged", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("a rejected ball leaves no trace: the next contours are unchanged", "[descriptors][gsc]", test::Mesh_types) {
   // The construction keeps per-thread vertex records between calls; a ball rejected half-way
   // (an index out of range after valid ones) must not leave records behind.
   TestType m;
@@ -363,7 +362,7 @@ TEMPLATE_TEST_CASE("a rejected ball leaves no trace: the next contours are uncha
   }
 }
 
-TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of walks seeded from every face", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of walks seeded from every face", "[descriptors][gsc]", test::Mesh_types) {
   TestType m;
   make_legged_sphere(m);
   for(double L : {0.25, 0.5, 0.8}) {
@@ -383,7 +382,7 @@ TEMPLATE_TEST_CASE("GSC on a sphere: walks seeded by descent give the bits of wa
   }
 }
 
-TEMPLATE_TEST_CASE("GSC on a sphere: balls that rule out descent seeds give the same contours", "[descriptors][gsc]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("GSC on a sphere: balls that rule out descent seeds give the same contours", "[descriptors][gsc]", test::Mesh_types) {
   // Balls the caller made: two minima (distances to the nearer of two points), a vertex exactly
   // on a row line, a ball missing the neighbours of disc vertices, a ball listing a vertex twice.
   TestType m;

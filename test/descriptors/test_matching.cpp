@@ -1,6 +1,6 @@
 // Descriptor matching policies: k nearest descriptors against a brute-force sort, the contour
 // comparison strategies of match_contours (exact = indexed bit for bit, fields within their
-// bound), distances from one descriptor to a set; over Surface_mesh and Polyhedron_3.
+// bound), distances from one descriptor to a set; over the mesh types of test_meshes.h.
 #include "spectral/spectral_test_helpers.h"
 #include "test_meshes.h"
 
@@ -25,10 +25,10 @@ void contour_sets(std::vector<shapecorr::Spin_contour>& sources, std::vector<sha
   Mesh a;
   shapecorr::make_icosphere(a, 2);
   test::transform_points(a, [](const Eigen::Vector3d& p) {
-    return Eigen::Vector3d((1.0 + 0.15 * std::sin(3 * p.x() + 1) * std::cos(2 * p.y()) + 0.08 * p.z() * p.z() * p.z()) * p);
+    return Eigen::Vector3d((1.0 + 0.15 * std::sin(3 * p.x() + 1) * std::cos(2 * p.y() + 0.5) + 0.08 * p.z() * p.z() * p.z()) * p);
   });
   Mesh b = a;
-  const Eigen::Isometry3d T = test::random_rigid_motion(5);
+  const Eigen::Isometry3d T = test::representable_rigid_motion<Mesh>(5);
   test::transform_points(b, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(T * p); });
   const auto np = SP::spin_axis(shapecorr::Spin_axis::CENTRAL_DIRECTION).image_rows(std::size_t(40)).image_columns(std::size_t(20));
   const shapecorr::Spin_descriptors<Mesh> sa(a, np), sb(b, np);
@@ -73,8 +73,8 @@ TEST_CASE("k nearest descriptors: the first k of a full sort, ties by position, 
   for(std::size_t j = 0; j < targets.size(); ++j) CHECK(d[j] == distance(sources[4], targets[j]));
 }
 
-TEMPLATE_TEST_CASE("match_contours: every comparison strategy finds the moved copy; exact and indexed agree bit for bit",
-                   "[descriptors][matching][contour-distance]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("match_contours: every comparison strategy finds the moved copy; exact and indexed agree bit for bit",
+                   "[descriptors][matching][contour-distance]", test::Mesh_types) {
   std::vector<shapecorr::Spin_contour> sources, targets;
   contour_sets<TestType>(sources, targets);
   REQUIRE(sources.size() >= shapecorr::indexed_contour_matching_threshold); // AUTOMATIC takes the indexed path

@@ -75,8 +75,7 @@ double image_difference(const shapecorr::Spin_image& a, const shapecorr::Spin_im
 
 } // namespace
 
-TEMPLATE_TEST_CASE("Spin Contour of a flat square seen along an in-plane axis is the rectangle [0,1] x [-1,1]", "[descriptors][spin-contour]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("Spin Contour of a flat square seen along an in-plane axis is the rectangle [0,1] x [-1,1]", "[descriptors][spin-contour]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 10, 10, 2.0, 2.0); // [0,2]^2, z = 0
   const shapecorr::Spin_descriptors<TestType> sd(m, SP::support_length(2.0).image_rows(std::size_t(120)).image_columns(std::size_t(60)));
@@ -103,8 +102,7 @@ TEMPLATE_TEST_CASE("Spin Contour of a flat square seen along an in-plane axis is
   CHECK(c.size() == 58 * 2 + 2 * 32);
 }
 
-TEMPLATE_TEST_CASE("Spin Contour of a tube seen from its axis is two vertical lines of width rho(1 - cos(pi/N))", "[descriptors][spin-contour]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("Spin Contour of a tube seen from its axis is two vertical lines of width rho(1 - cos(pi/N))", "[descriptors][spin-contour]", test::Mesh_types) {
   TestType m;
   const double rho = 0.5, H = 1.0;
   const int N = 32;
@@ -147,8 +145,7 @@ double tilted_square_bin_area(double e, int i, int j) {
   return sum * (x1 - x0) / n;
 }
 
-TEMPLATE_TEST_CASE("exact face-based spin image: areas of annuli, strips and tilted planes", "[descriptors][face-spin-image]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("exact face-based spin image: areas of annuli, strips and tilted planes", "[descriptors][face-spin-image]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 7, 9, 2.0, 2.0); // [0,2]^2, z = 0, an uneven triangulation
   const shapecorr::Spin_descriptors<TestType> sd(m, SP::support_length(2.0).image_rows(std::size_t(40)).image_columns(std::size_t(20)));
@@ -187,8 +184,8 @@ TEMPLATE_TEST_CASE("exact face-based spin image: areas of annuli, strips and til
   }
 }
 
-TEMPLATE_TEST_CASE("exact face-based image and Spin Contour agree: every contour point lies in a bin of positive area",
-                   "[descriptors][face-spin-image]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("exact face-based image and Spin Contour agree: every contour point lies in a bin of positive area",
+                   "[descriptors][face-spin-image]", test::Mesh_types) {
   // Two independent constructions: a contour point (alpha, beta_r) is a surface point on the row's
   // centre plane, so the surface has positive area in its bin (row r, column floor(alpha / w)).
   TestType m;
@@ -214,12 +211,11 @@ TEMPLATE_TEST_CASE("exact face-based image and Spin Contour agree: every contour
   }
 }
 
-TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for every axis", "[descriptors][invariance]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("spin descriptors are invariant under a rigid motion, for every axis", "[descriptors][invariance]", test::Mesh_types) {
   TestType a, b;
   make_bumpy_sphere(a, 3);
   make_bumpy_sphere(b, 3);
-  const Eigen::Isometry3d T = test::random_rigid_motion(11);
+  const Eigen::Isometry3d T = test::representable_rigid_motion<TestType>(11);
   test::transform_points(b, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(T * p); });
   for(Spin_axis axis : {Spin_axis::NORMAL, Spin_axis::CENTRAL_DIRECTION, Spin_axis::LOCAL_CENTRAL_DIRECTION, Spin_axis::SHOT_LRF}) {
     INFO("axis " << static_cast<int>(axis));
@@ -237,8 +233,7 @@ TEMPLATE_TEST_CASE("spin descriptors are invariant under a rigid motion, for eve
   }
 }
 
-TEMPLATE_TEST_CASE("Spin Contour is robust to resampling; the face-based image tracks area", "[descriptors][resampling]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("Spin Contour is robust to resampling; the face-based image tracks area", "[descriptors][resampling]", test::Mesh_types) {
   // The same torus at two resolutions: vertex (0, 0) is the same point on both.
   TestType coarse, fine;
   shapecorr::make_torus(coarse, 2.0, 0.7, 48, 18);
@@ -264,8 +259,7 @@ TEMPLATE_TEST_CASE("Spin Contour is robust to resampling; the face-based image t
   CHECK(shapecorr::spin_image_correlation(fc, ff).first > 0.9);
 }
 
-TEMPLATE_TEST_CASE("Spin Contour walk: faces listed in inconsistent orientations give the same contour", "[descriptors][spin-contour]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("Spin Contour walk: faces listed in inconsistent orientations give the same contour", "[descriptors][spin-contour]", test::Mesh_types) {
   // The walk steps across shared edges by half-edge records; a neighbour that lists the edge the
   // same way round (inconsistent orientation, possible in a user's face list) swaps the carried
   // corners. Level sets do not depend on orientation: flipping every third face changes nothing
@@ -322,7 +316,7 @@ TEST_CASE("contour L1 distance: zero on identical, symmetric, equal to the kd-tr
   CHECK_THROWS_AS(shapecorr::contour_l1_distance(shapecorr::Spin_contour(60), c[0]), shapecorr::Invalid_argument);
 }
 
-TEMPLATE_TEST_CASE("axes fall back to the normal where they are undefined", "[descriptors][axes]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("axes fall back to the normal where they are undefined", "[descriptors][axes]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 20, 20, 2.0, 2.0); // flat: centroid (1, 1, 0) is vertex (10, 10)
   const auto centre = vertex_at(m, 10 * 21 + 10), corner = vertex_at(m, 0), edge_mid = vertex_at(m, 10);
@@ -346,8 +340,7 @@ TEMPLATE_TEST_CASE("axes fall back to the normal where they are undefined", "[de
   CHECK(std::abs(s.axis.dot(z)) == Approx(1.0).epsilon(1e-9));
 }
 
-TEMPLATE_TEST_CASE("SHOT frame: orthonormal, right-handed, third axis along the normal of a curved patch", "[descriptors][axes]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("SHOT frame: orthonormal, right-handed, third axis along the normal of a curved patch", "[descriptors][axes]", test::Mesh_types) {
   TestType m;
   make_bumpy_sphere(m, 4);
   const shapecorr::Spin_descriptors<TestType> sd(m, SP::lrf_radius(0.25));
@@ -365,8 +358,7 @@ TEMPLATE_TEST_CASE("SHOT frame: orthonormal, right-handed, third axis along the 
   CHECK(aligned == tried);
 }
 
-TEMPLATE_TEST_CASE("surface points: a face location at a corner is that vertex; face normal axis", "[descriptors][surface-points]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("surface points: a face location at a corner is that vertex; face normal axis", "[descriptors][surface-points]", test::Mesh_types) {
   TestType m;
   make_bumpy_sphere(m, 2);
   const shapecorr::Spin_descriptors<TestType> sd(m);
@@ -382,7 +374,7 @@ TEMPLATE_TEST_CASE("surface points: a face location at a corner is that vertex; 
   CHECK(std::abs(op.axis.dot(Eigen::Vector3d(b.x() - a.x(), b.y() - a.y(), b.z() - a.z()))) < 1e-12);
 }
 
-TEMPLATE_TEST_CASE("matching descriptors of a moved copy finds every vertex itself", "[descriptors][matching]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("matching descriptors of a moved copy finds every vertex itself", "[descriptors][matching]", test::Mesh_types) {
   TestType a, b;
   make_bumpy_sphere(a, 2);
   make_bumpy_sphere(b, 2);
@@ -514,8 +506,7 @@ std::vector<shapecorr::Spin_contour> spread_contours(const Mesh& m) {
 }
 } // namespace
 
-TEMPLATE_TEST_CASE("contour distance field: exact samples, approximate L1 within its bound, symmetric", "[descriptors][contour-distance][distance-field]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("contour distance field: exact samples, approximate L1 within its bound, symmetric", "[descriptors][contour-distance][distance-field]", test::Mesh_types) {
   TestType m;
   make_bumpy_sphere(m, 3);
   const std::vector<shapecorr::Spin_contour> c = spread_contours(m);
@@ -612,8 +603,7 @@ namespace {
 bool same_value(double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(y)); }
 } // namespace
 
-TEMPLATE_TEST_CASE("contour nearest-point index: the exact L1 distance, at every cell count, on any grid", "[descriptors][contour-distance][nearest-point-index]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("contour nearest-point index: the exact L1 distance, at every cell count, on any grid", "[descriptors][contour-distance][nearest-point-index]", test::Mesh_types) {
   TestType m;
   make_bumpy_sphere(m, 3);
   const std::vector<shapecorr::Spin_contour> c = spread_contours(m);

@@ -12,7 +12,7 @@
 
 namespace SP = shapecorr::parameters;
 
-TEMPLATE_TEST_CASE("global average geodesic distance on the unit sphere is pi/2", "[agd]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("global average geodesic distance on the unit sphere is pi/2", "[agd]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 3); // 642 vertices
   auto agd = get(CGAL::dynamic_vertex_property_t<double>(), m);
@@ -27,7 +27,7 @@ TEMPLATE_TEST_CASE("global average geodesic distance on the unit sphere is pi/2"
   }
 }
 
-TEMPLATE_TEST_CASE("local average geodesic distance: sphere and plane closed forms", "[agd]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("local average geodesic distance: sphere and plane closed forms", "[agd]", test::Mesh_types) {
   SECTION("sphere") {
     TestType m;
     shapecorr::make_icosphere(m, 4);

@@ -19,7 +19,7 @@ Eigen::VectorXd euclidean_from(const Mesh& m, std::size_t s) {
 }
 } // namespace
 
-TEMPLATE_TEST_CASE("flat patch: geodesic = Euclidean distance", "[geodesics][plane]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("flat patch: geodesic = Euclidean distance", "[geodesics][plane]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 24, 24); // unit square, convex: every straight segment lies on the surface
   const std::size_t centre = 12 * 25 + 12, corner = 0;

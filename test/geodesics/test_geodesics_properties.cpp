@@ -19,7 +19,7 @@
 
 namespace SP = shapecorr::parameters;
 
-TEMPLATE_TEST_CASE("approximate engines agree with exact distances on a torus", "[geodesics]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("approximate engines agree with exact distances on a torus", "[geodesics]", test::Mesh_types) {
   TestType m;
   shapecorr::make_torus(m, 2.0, 0.7, 48, 18);
   shapecorr::Exact_geodesics<TestType> exact(m);
@@ -76,8 +76,7 @@ TEST_CASE("distances are invariant under vertex renumbering", "[geodesics][invar
   }
 }
 
-TEMPLATE_TEST_CASE("all-pairs matrix: symmetric, zero diagonal, the average of both directions", "[geodesics][all-pairs]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("all-pairs matrix: symmetric, zero diagonal, the average of both directions", "[geodesics][all-pairs]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 2); // 162 vertices
   shapecorr::Heat_method_geodesics<TestType> heat(m, SP::batch_size(std::size_t(16)));
@@ -99,8 +98,7 @@ TEMPLATE_TEST_CASE("all-pairs matrix: symmetric, zero diagonal, the average of b
   }
 }
 
-TEMPLATE_TEST_CASE("radius-limited distances touch only the geodesic ball", "[geodesics][radius]", test::Surface_mesh,
-                   test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("radius-limited distances touch only the geodesic ball", "[geodesics][radius]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 4);
   shapecorr::Fast_marching_geodesics<TestType> fmm(m);
@@ -127,8 +125,7 @@ TEMPLATE_TEST_CASE("radius-limited distances touch only the geodesic ball", "[ge
   CHECK_THROWS_AS(fmm.distances_within(0, -1.0, ball), shapecorr::Invalid_argument);
 }
 
-TEMPLATE_TEST_CASE("radius-limited distances on obtuse triangles: the full march's values, all but the last edge's worth", "[geodesics][radius]",
-                   test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("radius-limited distances on obtuse triangles: the full march's values, all but the last edge's worth", "[geodesics][radius]", test::Mesh_types) {
   // A stretched ellipsoid: its long thin triangles make triangle updates give a vertex a distance
   // below that of the vertex accepted before it (doc/geodesics.md), so the ball is only nearly in
   // increasing order and a vertex just inside R can be missing; every distance in the ball is
@@ -279,7 +276,7 @@ TEST_CASE("a failing factorization raises Solver_failure, not garbage", "[geodes
   }
 }
 
-TEMPLATE_TEST_CASE("all pairs by fast marching: one triangle, mirrored", "[geodesics][all-pairs]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("all pairs by fast marching: one triangle, mirrored", "[geodesics][all-pairs]", test::Mesh_types) {
   TestType m;
   shapecorr::make_torus(m, 2.0, 0.6, 30, 10);
   shapecorr::Fast_marching_geodesics<TestType> fmm(m);

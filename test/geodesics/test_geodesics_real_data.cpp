@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-TEMPLATE_TEST_CASE("TOSCA wolf: approximate vs exact geodesics", "[geodesics][real-data]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("TOSCA wolf: approximate vs exact geodesics", "[geodesics][real-data]", test::Mesh_types) {
   const std::string dir = test::data_dir();
   if(dir.empty()) {
     WARN("../shared/data not found: skipping the real-data test");

@@ -33,8 +33,7 @@ void check_sphere(const Mesh& m, const Engine& engine, double max_antipode_rel, 
 }
 } // namespace
 
-TEMPLATE_TEST_CASE("unit sphere: antipodes at pi, great-circle distances", "[geodesics][sphere]", test::Surface_mesh,
-                   test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("unit sphere: antipodes at pi, great-circle distances", "[geodesics][sphere]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 4); // 2562 vertices, mean edge 0.047
   SECTION("exact (CGAL shortest paths): only the polyhedral approximation error") {

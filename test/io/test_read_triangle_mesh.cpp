@@ -33,7 +33,7 @@ shapecorr::Mesh_defect read_defect(const std::string& path, shapecorr::Read_opti
 }
 } // namespace
 
-TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("reading meshes with validation", "[io]", test::Mesh_types) {
   using D = shapecorr::Mesh_defect;
   prefix = std::is_same<TestType, test::Surface_mesh>::value ? "shapecorr_test_sm_" : "shapecorr_test_poly_";
   SECTION("OFF, OBJ, PLY, STL round trip") {
@@ -137,19 +137,43 @@ TEMPLATE_TEST_CASE("reading meshes with validation", "[io]", test::Surface_mesh,
   }
 }
 
-TEST_CASE("coloured PLY output", "[io]") {
-  test::Surface_mesh m;
+TEMPLATE_LIST_TEST_CASE("coloured PLY output", "[io]", test::Mesh_types) {
+  TestType m;
   shapecorr::make_icosphere(m, 1);
-  std::vector<double> values(m.number_of_vertices());
+  std::vector<double> values(num_vertices(m));
   for(std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
   shapecorr::write_colored_ply(test::temp_path("shapecorr_test_colored.ply"), m, values, {0});
   test::Surface_mesh back;
   std::ifstream in(test::temp_path("shapecorr_test_colored.ply"));
   REQUIRE(CGAL::IO::read_PLY(in, back));
-  CHECK(back.number_of_vertices() == m.number_of_vertices());
+  CHECK(back.number_of_vertices() == num_vertices(m));
   auto colors = back.property_map<test::Surface_mesh::Vertex_index, CGAL::IO::Color>("v:color");
   REQUIRE(colors.second);
   CHECK(colors.first[test::Surface_mesh::Vertex_index(0)] == CGAL::IO::Color(230, 20, 20));
   CHECK(colors.first[test::Surface_mesh::Vertex_index(41)] == CGAL::IO::Color(253, 231, 37)); // the maximum: yellow
   CHECK_THROWS_AS(shapecorr::write_colored_ply(test::temp_path("shapecorr_test_bad.ply"), m, std::vector<double>(3)), shapecorr::Invalid_argument);
+}
+
+TEMPLATE_LIST_TEST_CASE("correspondence lines: both meshes side by side, one line per pair", "[io]", test::Mesh_types) {
+  TestType a, b;
+  shapecorr::make_icosphere(a, 1);
+  shapecorr::make_torus(b, 2.0, 0.5, 8, 5);
+  const std::vector<std::pair<std::size_t, std::size_t>> pairs = {{0, 0}, {41, 39}, {7, 3}};
+  const std::string path = test::temp_path("shapecorr_test_lines.obj");
+  shapecorr::write_correspondences(path, a, b, pairs);
+  std::ifstream in(path);
+  std::string line;
+  std::size_t v = 0, f = 0, l = 0;
+  std::vector<std::string> lines;
+  while(std::getline(in, line)) {
+    v += line.rfind("v ", 0) == 0;
+    f += line.rfind("f ", 0) == 0;
+    if(line.rfind("l ", 0) == 0) lines.push_back(line);
+  }
+  l = lines.size();
+  CHECK(v == 42 + 40);
+  CHECK(f == 80 + 80);
+  REQUIRE(l == 3);
+  CHECK(lines[1] == "l 42 82"); // 1-based: source vertex 41, target vertex 39 after the 42 source vertices
+  CHECK_THROWS_AS(shapecorr::write_correspondences(path, a, b, {{42, 0}}), shapecorr::Invalid_argument);
 }

@@ -169,7 +169,7 @@ TEST_CASE("the strict readers accept what the formats allow", "[io]") {
   CHECK((p.size() == 4 && f == Faces{{0, 1, 2}, {1, 3, 2}}));
 }
 
-TEMPLATE_TEST_CASE("strict readers read what CGAL writes", "[io]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("strict readers read what CGAL writes", "[io]", test::Mesh_types) {
   TestType sphere;
   shapecorr::make_icosphere(sphere, 2);
   for(const char* ext : {"off", "obj", "ply", "stl"})

@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-TEMPLATE_TEST_CASE("generated meshes are valid", "[mesh][primitives]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("generated meshes are valid", "[mesh][primitives]", test::Mesh_types) {
   TestType sphere, torus, grid;
   shapecorr::make_icosphere(sphere, 3);
   shapecorr::make_torus(torus, 2, 0.5, 20, 8);

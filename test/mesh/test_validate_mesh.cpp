@@ -120,7 +120,7 @@ TEST_CASE("each defect is detected and named", "[mesh][validation]") {
   }
 }
 
-TEMPLATE_TEST_CASE("validate_mesh works on any FaceGraph", "[mesh][validation]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("validate_mesh works on any FaceGraph", "[mesh][validation]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 3, 3);
   auto r = shapecorr::validate_mesh(m);

@@ -12,7 +12,7 @@
 
 namespace SP = shapecorr::parameters;
 
-TEMPLATE_TEST_CASE("furthest point sampling on a square picks the corners", "[sampling]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("furthest point sampling on a square picks the corners", "[sampling]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 10, 10);
   const auto vs = test::vertices_in_index_order(m);
@@ -28,7 +28,7 @@ TEMPLATE_TEST_CASE("furthest point sampling on a square picks the corners", "[sa
   }
 }
 
-TEMPLATE_TEST_CASE("furthest point sampling: seeded, distinct, spreading", "[sampling]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("furthest point sampling: seeded, distinct, spreading", "[sampling]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 3);
   typedef typename boost::graph_traits<TestType>::vertex_descriptor vd;

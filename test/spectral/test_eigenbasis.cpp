@@ -31,7 +31,7 @@ struct Dense_eigensolver {
 };
 } // namespace
 
-TEMPLATE_TEST_CASE("unit sphere: eigenvalues l(l+1) with multiplicity 2l+1", "[spectral][eigenbasis]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("unit sphere: eigenvalues l(l+1) with multiplicity 2l+1", "[spectral][eigenbasis]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 3); // 642 vertices: Spectra's shift-invert Lanczos (above dense_size)
   const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 36);
@@ -94,7 +94,7 @@ TEST_CASE("spectrum slicing returns the same pairs as one dense solve, clusters 
   }
 }
 
-TEMPLATE_TEST_CASE("each connected component contributes a zero eigenvalue", "[spectral][eigenbasis]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("each connected component contributes a zero eigenvalue", "[spectral][eigenbasis]", test::Mesh_types) {
   TestType a, b;
   shapecorr::make_icosphere(a, 3);
   shapecorr::make_icosphere(b, 2);

@@ -11,7 +11,7 @@
 
 namespace SP = shapecorr::parameters;
 
-TEMPLATE_TEST_CASE("cotangent Laplacian: L 1 = 0, symmetric, positive semi-definite", "[spectral][laplacian]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("cotangent Laplacian: L 1 = 0, symmetric, positive semi-definite", "[spectral][laplacian]", test::Mesh_types) {
   TestType m;
   test::make_ellipsoid(m, 3);
   for(bool idt : {false, true}) {
@@ -29,7 +29,7 @@ TEMPLATE_TEST_CASE("cotangent Laplacian: L 1 = 0, symmetric, positive semi-defin
   }
 }
 
-TEMPLATE_TEST_CASE("cotangent Laplacian: Dirichlet energy of a linear function on a flat patch is the area", "[spectral][laplacian]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("cotangent Laplacian: Dirichlet energy of a linear function on a flat patch is the area", "[spectral][laplacian]", test::Mesh_types) {
   TestType m;
   shapecorr::make_grid(m, 9, 6, 2.0, 1.5); // area 3
   // move interior vertices off the regular lattice so that some triangles are obtuse
@@ -49,7 +49,7 @@ TEMPLATE_TEST_CASE("cotangent Laplacian: Dirichlet energy of a linear function o
   }
 }
 
-TEMPLATE_TEST_CASE("lumped mass matrices sum to the surface area", "[spectral][laplacian]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("lumped mass matrices sum to the surface area", "[spectral][laplacian]", test::Mesh_types) {
   TestType m;
   test::make_ellipsoid(m, 2);
   const double area = CGAL::Polygon_mesh_processing::area(m);
@@ -70,7 +70,7 @@ TEST_CASE("mixed Voronoi areas on a regular flat grid: interior vertices own one
   CHECK(v[static_cast<Eigen::Index>(centre)] == Approx(1.0).epsilon(1e-12));
 }
 
-TEMPLATE_TEST_CASE("combinatorial Laplacian: degrees on the diagonal, L 1 = 0", "[spectral][laplacian]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("combinatorial Laplacian: degrees on the diagonal, L 1 = 0", "[spectral][laplacian]", test::Mesh_types) {
   TestType m;
   shapecorr::make_icosphere(m, 1); // icosahedron vertices have degree 5, the new ones 6
   const Eigen::SparseMatrix<double> L = shapecorr::combinatorial_laplacian(m);

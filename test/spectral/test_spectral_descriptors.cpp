@@ -29,7 +29,7 @@ std::vector<Eigen::MatrixXd> all_three(const Mesh& m, std::size_t k) {
 }
 } // namespace
 
-TEMPLATE_TEST_CASE("HKS, WKS, SI-HKS are invariant under a rigid motion", "[spectral][descriptors][invariance]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("HKS, WKS, SI-HKS are invariant under a rigid motion", "[spectral][descriptors][invariance]", test::Mesh_types) {
   TestType a;
   test::make_ellipsoid(a, 3);
   TestType b = a;
@@ -89,7 +89,7 @@ TEST_CASE("HKS, WKS, SI-HKS are invariant under vertex renumbering; property-map
   CHECK(worst < 1e-6 * scale);
 }
 
-TEMPLATE_TEST_CASE("SI-HKS is invariant under uniform scaling, HKS at fixed times is not", "[spectral][descriptors][invariance]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("SI-HKS is invariant under uniform scaling, HKS at fixed times is not", "[spectral][descriptors][invariance]", test::Mesh_types) {
   TestType a;
   test::make_ellipsoid(a, 3);
   TestType b = a;
@@ -166,7 +166,7 @@ TEST_CASE("TOSCA: ground-truth matches rank in the top percent by WKS distance",
   }
 }
 
-TEMPLATE_TEST_CASE("spectral_signature_matrix dispatches to the signature it names", "[spectral][descriptors]", test::Surface_mesh, test::Polyhedron) {
+TEMPLATE_LIST_TEST_CASE("spectral_signature_matrix dispatches to the signature it names", "[spectral][descriptors]", test::Mesh_types) {
   TestType m;
   test::make_ellipsoid(m, 2);
   const auto b = shapecorr::compute_laplace_beltrami_eigenbasis(m, 30);

@@ -67,7 +67,7 @@ public:
     : m_tm(tm), m_mesh(tm, np), m_vim(CGAL::get_initialized_vertex_index_map(tm)),
       m_him(CGAL::get_initialized_halfedge_index_map(tm)), m_fim(CGAL::get_initialized_face_index_map(tm)),
       m_vpm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                         get_const_property_map(CGAL::vertex_point, tm))) {
+                                         CGAL::get_const_property_map(CGAL::vertex_point, tm))) {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     m_threads = resolve_thread_count(choose_parameter(get_parameter(np, internal_np::number_of_threads), 0u));

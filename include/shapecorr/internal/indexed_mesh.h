@@ -53,7 +53,7 @@ public:
     m_index = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
     using parameters::get_parameter;
     auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                get_const_property_map(CGAL::vertex_point, tm));
+                                CGAL::get_const_property_map(CGAL::vertex_point, tm));
     const std::size_t n = num_vertices(tm);
     m_vertices.resize(n);
     m_arrays.V.resize(static_cast<Eigen::Index>(n), 3);

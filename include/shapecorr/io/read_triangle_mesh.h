@@ -86,7 +86,7 @@ Read_result read_triangle_mesh(const std::string& path, TriangleMesh& tm, const 
   require_valid(check, Mesh_requirements(), ctx);
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
     throw Invalid_input(Mesh_defect::non_manifold_edge, path + ": the faces do not form an oriented manifold surface");
-  clear(tm);
+  CGAL::clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, tm);
   if(options.triangulate && check.number_of_faces && r.non_triangle_faces) {
     CGAL::Polygon_mesh_processing::triangulate_faces(tm);

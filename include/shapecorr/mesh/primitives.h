@@ -26,7 +26,7 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& P, const std::vector
   for(const auto& p : P) pts.emplace_back(p[0], p[1], p[2]);
   std::vector<std::vector<std::size_t>> polys(T.size());
   for(std::size_t i = 0; i < T.size(); ++i) polys[i] = {T[i][0], T[i][1], T[i][2]};
-  clear(tm);
+  CGAL::clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, tm);
 }
 } // namespace internal

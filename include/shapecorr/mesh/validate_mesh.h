@@ -277,7 +277,7 @@ template <typename PolygonMesh, typename NamedParameters = parameters::Default_n
 Mesh_report validate_mesh(const PolygonMesh& pm, const NamedParameters& np = CGAL::parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, pm));
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), CGAL::get_const_property_map(CGAL::vertex_point, pm));
   auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
   typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
   std::vector<Point> points(num_vertices(pm));
