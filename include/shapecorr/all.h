@@ -14,5 +14,6 @@
 #include <shapecorr/sampling.h>
 #include <shapecorr/spectral.h>
 #include <shapecorr/descriptors.h>
-#include <shapecorr/evaluation/descriptor_ranking.h>
+#include <shapecorr/registration.h>
+#include <shapecorr/evaluation.h>
 #endif

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace shapecorr {
@@ -37,6 +38,16 @@ public:
     std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
     nearest_rec(0, q, best);
     return best;
+  }
+
+  /// The k nearest points to q, nearest first, as (index, squared distance) (fewer when size() < k).
+  std::vector<std::pair<std::size_t, double>> k_nearest(const Point& q, std::size_t k) const {
+    std::vector<std::pair<std::size_t, double>> heap; // max-heap on the distance, at most k entries
+    if(k == 0 || m_points.empty()) return heap;
+    heap.reserve(k + 1);
+    k_nearest_rec(0, q, k, heap);
+    std::sort_heap(heap.begin(), heap.end(), farther);
+    return heap;
   }
 
   /// Calls fn(index, squared distance) for every point within distance r of q.
@@ -113,6 +124,30 @@ private:
     const bool left_first = q[nd.axis] < nd.split;
     nearest_rec(left_first ? nd.left : nd.right, q, best);
     nearest_rec(left_first ? nd.right : nd.left, q, best);
+  }
+
+  static bool farther(const std::pair<std::size_t, double>& a, const std::pair<std::size_t, double>& b) { return a.second < b.second; }
+
+  void k_nearest_rec(std::uint32_t id, const Point& q, std::size_t k, std::vector<std::pair<std::size_t, double>>& heap) const {
+    const Node& nd = m_nodes[id];
+    if(heap.size() == k && box_distance2(nd, q) >= heap.front().second) return;
+    if(nd.axis < 0) {
+      for(std::uint32_t i = nd.begin; i < nd.end; ++i) {
+        const double d2 = distance2(m_points[m_order[i]], q);
+        if(heap.size() < k) {
+          heap.emplace_back(m_order[i], d2);
+          std::push_heap(heap.begin(), heap.end(), farther);
+        } else if(d2 < heap.front().second) {
+          std::pop_heap(heap.begin(), heap.end(), farther);
+          heap.back() = {m_order[i], d2};
+          std::push_heap(heap.begin(), heap.end(), farther);
+        }
+      }
+      return;
+    }
+    const bool left_first = q[nd.axis] < nd.split;
+    k_nearest_rec(left_first ? nd.left : nd.right, q, k, heap);
+    k_nearest_rec(left_first ? nd.right : nd.left, q, k, heap);
   }
 
   template <typename Fn>

@@ -1,0 +1,291 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// shapecorr register: rigid alignment of SOURCE to TARGET, optionally followed by NICPS; the
+// registered source, its distance map and a JSON report with the distances before and after.
+#include "cli_common.h"
+
+#include <shapecorr/evaluation.h>
+#include <shapecorr/registration.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+namespace cli {
+namespace {
+
+// Landmarks of a file: the JSON of ../shared/data/vertebrae (a list of {"id", "coordinates"}), or
+// plain text (one "x y z" per line; '#' starts a comment). Ids are empty for text files.
+struct Landmarks {
+  std::vector<std::string> ids;
+  std::vector<K::Point_3> points;
+};
+
+Landmarks read_landmarks(const std::string& path) {
+  std::ifstream in(path);
+  if(!in) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": cannot open the landmark file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  Landmarks L;
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if(first != std::string::npos && text[first] == '[') {
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(text);
+    } catch(const std::exception& e) {
+      throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": not valid JSON (" + e.what() + ")");
+    }
+    std::size_t i = 0;
+    for(const auto& e : j) {
+      const std::string where = path + ": landmark " + std::to_string(i++);
+      if(!e.is_object() || !e.contains("coordinates") || !e["coordinates"].is_array() || e["coordinates"].size() != 3)
+        throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, where + " has no \"coordinates\": [x, y, z]");
+      double c[3];
+      for(int k = 0; k < 3; ++k) {
+        const auto& v = e["coordinates"][static_cast<std::size_t>(k)];
+        if(!v.is_number()) throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, where + ": a coordinate is not a number");
+        c[k] = v.get<double>();
+      }
+      L.ids.push_back(e.contains("id") && e["id"].is_string() ? e["id"].get<std::string>() : std::to_string(i - 1));
+      L.points.emplace_back(c[0], c[1], c[2]);
+    }
+  } else {
+    std::istringstream lines(text);
+    std::string line;
+    std::size_t no = 0;
+    while(std::getline(lines, line)) {
+      ++no;
+      line = line.substr(0, line.find('#'));
+      if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      std::istringstream ls(line);
+      double x, y, z;
+      std::string rest;
+      if(!(ls >> x >> y >> z) || (ls >> rest))
+        throw shapecorr::Invalid_input(shapecorr::Mesh_defect::unreadable_file, path + ": line " + std::to_string(no) + " is not 'x y z'");
+      L.ids.push_back(std::to_string(L.points.size()));
+      L.points.emplace_back(x, y, z);
+    }
+  }
+  for(std::size_t i = 0; i < L.points.size(); ++i)
+    if(!std::isfinite(L.points[i].x()) || !std::isfinite(L.points[i].y()) || !std::isfinite(L.points[i].z()))
+      throw shapecorr::Invalid_input(shapecorr::Mesh_defect::non_finite_coordinate, path + ": landmark " + L.ids[i] + " is not finite");
+  return L;
+}
+
+// The pairs of two landmark files: by id where both files have the same ids (in any order), else
+// by position (the counts must agree).
+void pair_landmarks(Landmarks& s, Landmarks& t) {
+  Landmarks ps, pt;
+  for(std::size_t i = 0; i < s.ids.size(); ++i)
+    for(std::size_t j = 0; j < t.ids.size(); ++j)
+      if(s.ids[i] == t.ids[j]) {
+        ps.ids.push_back(s.ids[i]);
+        ps.points.push_back(s.points[i]);
+        pt.ids.push_back(t.ids[j]);
+        pt.points.push_back(t.points[j]);
+      }
+  if(ps.points.size() == s.points.size() && ps.points.size() == t.points.size()) {
+    s = ps;
+    t = pt;
+    return;
+  }
+  if(s.points.size() != t.points.size())
+    throw shapecorr::Invalid_argument("register: " + std::to_string(s.points.size()) + " source landmarks against " +
+                                      std::to_string(t.points.size()) + " target landmarks (and their ids differ)");
+}
+
+nlohmann::json distances_json(const shapecorr::Surface_distance& d) {
+  return {{"l1", d.l1}, {"l2", d.l2}, {"lmax", d.lmax}, {"error_bound", d.error_bound}};
+}
+
+int run_register(const Args& a) {
+  Mesh source = read_mesh(a, 0);
+  const Mesh target = read_mesh(a, 1);
+  const std::string output = a.require("output");
+  const std::string pre = a.get("pre-align", a.has("source-landmarks") ? "landmarks" : "pca");
+  shapecorr::Rigid_initialization init;
+  if(pre == "pca") init = shapecorr::Rigid_initialization::PRINCIPAL_AXES;
+  else if(pre == "landmarks") init = shapecorr::Rigid_initialization::LANDMARKS;
+  else if(pre == "none") init = shapecorr::Rigid_initialization::NONE;
+  else throw Usage_error("register: --pre-align must be pca, landmarks or none");
+  if(a.has("source-landmarks") != a.has("target-landmarks"))
+    throw Usage_error("register: --source-landmarks and --target-landmarks go together");
+  if(init == shapecorr::Rigid_initialization::LANDMARKS && !a.has("source-landmarks"))
+    throw Usage_error("register: --pre-align landmarks needs --source-landmarks and --target-landmarks");
+  const std::string method = a.get("method", "rigid");
+  if(method != "rigid" && method != "nicps") throw Usage_error("register: --method must be rigid or nicps");
+  const std::string regularizer = a.get("regularizer", "combinatorial");
+  shapecorr::Nicps_regularizer reg;
+  if(regularizer == "combinatorial") reg = shapecorr::Nicps_regularizer::COMBINATORIAL_LAPLACIAN;
+  else if(regularizer == "cotangent") reg = shapecorr::Nicps_regularizer::COTANGENT_LAPLACIAN;
+  else if(regularizer == "edge") reg = shapecorr::Nicps_regularizer::EDGE;
+  else throw Usage_error("register: --regularizer must be combinatorial, cotangent or edge");
+  if(method == "rigid" && a.has("regularizer")) throw Usage_error("register: --regularizer applies to --method nicps");
+  const std::string metric = a.get("metric", "point-to-plane");
+  if(metric != "point-to-plane" && metric != "point-to-point") throw Usage_error("register: --metric must be point-to-plane or point-to-point");
+  const std::size_t iterations = to_count(a.get("iterations", "50"), "--iterations", 0, method == "nicps" ? 10000 : 100000);
+  const std::string ext = extension(output);
+  if(ext != "ply" && ext != "off" && ext != "obj" && ext != "stl") throw Usage_error("register: --output must end in .ply, .off, .obj or .stl");
+
+  Landmarks ls, lt;
+  if(a.has("source-landmarks")) {
+    ls = read_landmarks(a.get("source-landmarks"));
+    lt = read_landmarks(a.get("target-landmarks"));
+    pair_landmarks(ls, lt);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const shapecorr::Surface_distance before = shapecorr::surface_distance(source, target);
+  namespace SP = shapecorr::parameters;
+  const auto np = SP::rigid_initialization(init)
+                      .allow_scaling(a.has("scale"))
+                      .icp_metric(metric == "point-to-plane" ? shapecorr::Icp_metric::POINT_TO_PLANE : shapecorr::Icp_metric::POINT_TO_POINT)
+                      .number_of_iterations(method == "rigid" ? iterations : std::size_t(50));
+  const shapecorr::Rigid_alignment_report r = init == shapecorr::Rigid_initialization::LANDMARKS
+                                                  ? shapecorr::align_rigidly(source, target, np.landmark_points(ls.points), SP::landmark_points(lt.points))
+                                                  : shapecorr::align_rigidly(source, target, np);
+  shapecorr::apply_transform(source, r.transform);
+  shapecorr::Nicps_report nr;
+  std::vector<std::size_t> steer_vertex; // NICPS: the source vertex that carries each landmark
+  if(method == "nicps") {
+    // landmarks steer the fit: each source landmark's nearest vertex of the (moved) source
+    std::vector<std::pair<std::size_t, Eigen::Vector3d>> steer;
+    for(std::size_t i = 0; i < ls.points.size(); ++i) {
+      const Eigen::Vector3d p = r.transform(Eigen::Vector3d(ls.points[i].x(), ls.points[i].y(), ls.points[i].z()));
+      std::size_t best = 0;
+      double bd = std::numeric_limits<double>::infinity();
+      for(vertex_descriptor v : vertices(source)) {
+        const double d = (Eigen::Vector3d(source.point(v).x(), source.point(v).y(), source.point(v).z()) - p).squaredNorm();
+        if(d < bd) bd = d, best = v.idx();
+      }
+      steer.emplace_back(best, Eigen::Vector3d(lt.points[i].x(), lt.points[i].y(), lt.points[i].z()));
+      steer_vertex.push_back(best);
+    }
+    const bool show = verbose(a);
+    const std::function<bool(const shapecorr::Nicps_iteration_record&)> progress = [&](const shapecorr::Nicps_iteration_record& it) {
+      if(show)
+        std::cerr << "nicps: iteration " << it.iteration + 1 << "/" << iterations << ", alpha " << it.alpha << ", pairs " << it.forward_pairs << " + "
+                  << it.inverse_pairs << ", rms distance " << it.rms_distance << "\n";
+      return true;
+    };
+    auto fitted = source.add_property_map<vertex_descriptor, K::Point_3>("v:nicps").first;
+    nr = shapecorr::nicps(source, target, fitted,
+                          SP::nicps_regularizer(reg).number_of_iterations(iterations).landmark_correspondences(steer).iteration_callback(progress));
+    for(vertex_descriptor v : vertices(source)) source.point(v) = fitted[v];
+    source.remove_property_map(fitted);
+  }
+  const shapecorr::Surface_distance after = shapecorr::surface_distance(source, target);
+  const double secs = seconds_since(t0);
+  if(!CGAL::IO::write_polygon_mesh(output, source, CGAL::parameters::stream_precision(17)))
+    throw shapecorr::Output_error("register: cannot write '" + output + "'");
+
+  std::vector<double> lm_before, lm_after;
+  if(!ls.points.empty()) {
+    lm_before = shapecorr::landmark_distances(ls.points, lt.points);
+    std::vector<K::Point_3> moved; // rigid: the landmarks moved; NICPS: their vertices after the fit
+    for(std::size_t i = 0; i < ls.points.size(); ++i) {
+      const auto& p = ls.points[i];
+      const Eigen::Vector3d q = r.transform(Eigen::Vector3d(p.x(), p.y(), p.z()));
+      moved.push_back(method == "nicps" ? source.point(vertex_descriptor(static_cast<Mesh::size_type>(steer_vertex[i]))) : K::Point_3(q.x(), q.y(), q.z()));
+    }
+    lm_after = shapecorr::landmark_distances(moved, lt.points);
+  }
+  if(a.has("distance-map")) {
+    auto d = source.add_property_map<vertex_descriptor, double>("v:distance", 0.0).first;
+    shapecorr::compute_distances_to_surface(source, target, d);
+    std::vector<double> values;
+    for(vertex_descriptor v : vertices(source)) values.push_back(d[v]);
+    if(extension(a.get("distance-map")) != "ply") throw Usage_error("register: --distance-map must end in .ply");
+    shapecorr::write_colored_ply(a.get("distance-map"), source, values);
+  }
+  if(a.has("report")) {
+    nlohmann::json j;
+    j["source"] = a.positional[0];
+    j["target"] = a.positional[1];
+    j["method"] = method;
+    if(method == "nicps") {
+      j["regularizer"] = regularizer;
+      j["nicps_stop"] = shapecorr::to_string(nr.stop);
+      nlohmann::json nits = nlohmann::json::array();
+      for(const auto& it : nr.iterations)
+        nits.push_back({{"iteration", it.iteration}, {"alpha", it.alpha}, {"forward_pairs", it.forward_pairs}, {"inverse_pairs", it.inverse_pairs},
+                        {"energy", it.energy}, {"rms_distance", it.rms_distance}, {"step", it.step}});
+      j["nicps_per_iteration"] = nits;
+    }
+    j["pre_align"] = pre;
+    j["metric"] = metric;
+    j["scale_allowed"] = a.has("scale");
+    std::vector<std::vector<double>> m(4, std::vector<double>(4));
+    const Eigen::Matrix4d M = r.transform.matrix();
+    for(int i = 0; i < 4; ++i)
+      for(int k = 0; k < 4; ++k) m[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = M(i, k);
+    j["transform"] = m;
+    j["scale"] = r.transform.scale;
+    j["starts_tried"] = r.starts_tried;
+    j["winning_start"] = r.winning_start;
+    j["stop"] = shapecorr::to_string(r.stop);
+    j["iterations"] = r.iterations.size();
+    nlohmann::json its = nlohmann::json::array();
+    for(const auto& it : r.iterations)
+      its.push_back({{"iteration", it.iteration}, {"pairs", it.pairs}, {"energy", it.energy}, {"rms_distance", it.rms_distance}, {"step", it.step}});
+    j["per_iteration"] = its;
+    j["distance_before"] = distances_json(before);
+    j["distance_after"] = distances_json(after);
+    if(!lm_before.empty()) {
+      j["landmark_ids"] = ls.ids;
+      j["landmark_distances_before"] = lm_before;
+      j["landmark_distances_after"] = lm_after;
+    }
+    j["seconds"] = secs;
+    std::ofstream out = open_output(a.get("report"));
+    out << j.dump(2) << "\n";
+  }
+  if(verbose(a)) {
+    if(method == "nicps") std::cerr << "register: nicps (" << regularizer << "), " << nr.iterations.size() << " iterations (" << shapecorr::to_string(nr.stop) << ")\n";
+    std::cerr << "register: " << (method == "nicps" ? "rigid alignment" : "rigid") << " (" << pre << (a.has("scale") ? ", scale" : "") << ", " << metric << "), " << r.iterations.size()
+              << " ICP iterations (" << shapecorr::to_string(r.stop) << ", start " << r.winning_start + 1 << " of " << r.starts_tried
+              << (method == "nicps" ? "), then NICPS" : ")") << "; l2 " << before.l2 << " -> " << after.l2 << ", lmax " << before.lmax << " -> " << after.lmax;
+    if(!lm_after.empty()) {
+      double mb = 0, ma = 0;
+      for(std::size_t i = 0; i < lm_after.size(); ++i) mb += lm_before[i] / static_cast<double>(lm_after.size()), ma += lm_after[i] / static_cast<double>(lm_after.size());
+      std::cerr << "; mean landmark distance " << mb << " -> " << ma;
+    }
+    std::cerr << "; " << secs << " s -> " << output << "\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+const Command& register_command() {
+  static const Command c{
+      "register",
+      "register SOURCE TARGET --output FILE [--method rigid|nicps] [--pre-align pca|landmarks|none] [--source-landmarks FILE --target-landmarks FILE] [options]",
+      "Registers SOURCE (the template) to TARGET (thesis chapter 6). Rigid: an initialization from principal axes "
+      "(default; every proper sign choice tried), landmark pairs (default when landmark files are given) or none, "
+      "then trimmed ICP. NICPS: the rigid alignment, then the non-rigid fit that keeps SOURCE's connectivity "
+      "(landmark pairs, when given, steer it; a progress line per iteration). Writes the registered SOURCE to FILE "
+      "(.ply, .off, .obj, .stl); a summary line on stderr (surface distances l2 and lmax before and after, landmark "
+      "distances: rigid, the landmarks moved; NICPS, the vertices nearest to them carried by the fit). Landmark files: the JSON of ../shared/data/vertebrae (a list of "
+      "{\"id\", \"coordinates\"}, paired by id) or text, one 'x y z' per line.",
+      with_mesh_reading_options({{"output", "FILE", "the registered source mesh"},
+                                 {"method", "rigid|nicps", "rigid alignment only (default), or followed by NICPS"},
+                                 {"regularizer", "combinatorial|cotangent|edge", "NICPS's regularizer (default combinatorial)"},
+                                 {"pre-align", "pca|landmarks|none", "initialization (default pca, landmarks with landmark files)"},
+                                 {"source-landmarks", "FILE", "landmarks of SOURCE (JSON or text)"},
+                                 {"target-landmarks", "FILE", "landmarks of TARGET, same ids or order"},
+                                 {"scale", "", "also a uniform scale (a similarity)"},
+                                 {"metric", "point-to-plane|point-to-point", "the ICP distance (default point-to-plane)"},
+                                 {"iterations", "N", "iterations of the method, at most: ICP per start, or NICPS (default 50)"},
+                                 {"distance-map", "FILE.ply", "the moved source coloured by its distance to TARGET"},
+                                 {"report", "FILE.json", "transform, iterations, surface and landmark distances before and after"}}),
+      2, 2, run_register};
+  return c;
+}
+
+} // namespace cli
