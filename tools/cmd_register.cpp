@@ -100,6 +100,16 @@ void pair_landmarks(Landmarks& s, Landmarks& t) {
                                       std::to_string(t.points.size()) + " target landmarks (and their ids differ)");
 }
 
+// `mesh` coloured by the distance of each of its vertices to `target`.
+void write_distance_map(const std::string& path, Mesh& mesh, const Mesh& target) {
+  auto d = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0.0).first;
+  shapecorr::compute_distances_to_surface(mesh, target, d);
+  std::vector<double> values;
+  for(vertex_descriptor v : vertices(mesh)) values.push_back(d[v]);
+  mesh.remove_property_map(d);
+  shapecorr::write_colored_ply(path, mesh, values);
+}
+
 nlohmann::json distances_json(const shapecorr::Surface_distance& d) {
   return {{"l1", d.l1}, {"l2", d.l2}, {"lmax", d.lmax}, {"error_bound", d.error_bound}};
 }
@@ -130,6 +140,8 @@ int run_register(const Args& a) {
   const std::string metric = a.get("metric", "point-to-plane");
   if(metric != "point-to-plane" && metric != "point-to-point") throw Usage_error("register: --metric must be point-to-plane or point-to-point");
   const std::size_t iterations = to_count(a.get("iterations", "50"), "--iterations", 0, method == "nicps" ? 10000 : 100000);
+  for(const char* map : {"distance-map", "distance-map-before"})
+    if(a.has(map) && extension(a.get(map)) != "ply") throw Usage_error(std::string("register: --") + map + " must end in .ply");
   const std::string ext = extension(output);
   if(ext != "ply" && ext != "off" && ext != "obj" && ext != "stl") throw Usage_error("register: --output must end in .ply, .off, .obj or .stl");
 
@@ -141,6 +153,7 @@ int run_register(const Args& a) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const shapecorr::Surface_distance before = shapecorr::surface_distance(source, target);
+  if(a.has("distance-map-before")) write_distance_map(a.get("distance-map-before"), source, target);
   namespace SP = shapecorr::parameters;
   const auto np = SP::rigid_initialization(init)
                       .allow_scaling(a.has("scale"))
@@ -195,14 +208,7 @@ int run_register(const Args& a) {
     }
     lm_after = shapecorr::landmark_distances(moved, lt.points);
   }
-  if(a.has("distance-map")) {
-    auto d = source.add_property_map<vertex_descriptor, double>("v:distance", 0.0).first;
-    shapecorr::compute_distances_to_surface(source, target, d);
-    std::vector<double> values;
-    for(vertex_descriptor v : vertices(source)) values.push_back(d[v]);
-    if(extension(a.get("distance-map")) != "ply") throw Usage_error("register: --distance-map must end in .ply");
-    shapecorr::write_colored_ply(a.get("distance-map"), source, values);
-  }
+  if(a.has("distance-map")) write_distance_map(a.get("distance-map"), source, target);
   if(a.has("report")) {
     nlohmann::json j;
     j["source"] = a.positional[0];
@@ -282,7 +288,8 @@ const Command& register_command() {
                                  {"scale", "", "also a uniform scale (a similarity)"},
                                  {"metric", "point-to-plane|point-to-point", "the ICP distance (default point-to-plane)"},
                                  {"iterations", "N", "iterations of the method, at most: ICP per start, or NICPS (default 50)"},
-                                 {"distance-map", "FILE.ply", "the moved source coloured by its distance to TARGET"},
+                                 {"distance-map", "FILE.ply", "the registered source coloured by its distance to TARGET"},
+                                 {"distance-map-before", "FILE.ply", "SOURCE as given, coloured by its distance to TARGET"},
                                  {"report", "FILE.json", "transform, iterations, surface and landmark distances before and after"}}),
       2, 2, run_register};
   return c;
