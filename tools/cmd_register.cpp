@@ -163,6 +163,7 @@ int run_register(const Args& a) {
                                                   ? shapecorr::align_rigidly(source, target, np.landmark_points(ls.points), SP::landmark_points(lt.points))
                                                   : shapecorr::align_rigidly(source, target, np);
   shapecorr::apply_transform(source, r.transform);
+  const shapecorr::Surface_distance after_rigid = shapecorr::surface_distance(source, target);
   shapecorr::Nicps_report nr;
   std::vector<std::size_t> steer_vertex; // NICPS: the source vertex that carries each landmark
   if(method == "nicps") {
@@ -197,9 +198,15 @@ int run_register(const Args& a) {
   if(!CGAL::IO::write_polygon_mesh(output, source, CGAL::parameters::stream_precision(17)))
     throw shapecorr::Output_error("register: cannot write '" + output + "'");
 
-  std::vector<double> lm_before, lm_after;
+  std::vector<double> lm_before, lm_after, lm_after_rigid;
   if(!ls.points.empty()) {
     lm_before = shapecorr::landmark_distances(ls.points, lt.points);
+    std::vector<K::Point_3> rigid;
+    for(const auto& p : ls.points) {
+      const Eigen::Vector3d q = r.transform(Eigen::Vector3d(p.x(), p.y(), p.z()));
+      rigid.emplace_back(q.x(), q.y(), q.z());
+    }
+    lm_after_rigid = shapecorr::landmark_distances(rigid, lt.points);
     std::vector<K::Point_3> moved; // rigid: the landmarks moved; NICPS: their vertices after the fit
     for(std::size_t i = 0; i < ls.points.size(); ++i) {
       const auto& p = ls.points[i];
@@ -242,9 +249,11 @@ int run_register(const Args& a) {
     j["per_iteration"] = its;
     j["distance_before"] = distances_json(before);
     j["distance_after"] = distances_json(after);
+    if(method == "nicps") j["distance_after_rigid"] = distances_json(after_rigid);
     if(!lm_before.empty()) {
       j["landmark_ids"] = ls.ids;
       j["landmark_distances_before"] = lm_before;
+      if(method == "nicps") j["landmark_distances_after_rigid"] = lm_after_rigid;
       j["landmark_distances_after"] = lm_after;
     }
     j["seconds"] = secs;
