@@ -2,6 +2,7 @@
 // renumbering, all-pairs symmetry, radius-limited queries, several components, bad arguments.
 #include "spectral/spectral_test_helpers.h"
 #include "test_meshes.h"
+#include "test_renumbering.h"
 
 #include <shapecorr/geodesics.h>
 #include <shapecorr/sampling.h>
@@ -47,19 +48,8 @@ TEST_CASE("distances are invariant under vertex renumbering", "[geodesics][invar
   shapecorr::make_torus(a, 2.0, 0.6, 32, 12);
   const std::size_t n = a.number_of_vertices();
   // the same surface with vertices in a random order
-  std::vector<std::size_t> perm(n);
-  std::iota(perm.begin(), perm.end(), std::size_t(0));
-  CGAL::Random rng(42);
-  std::shuffle(perm.begin(), perm.end(), std::mt19937(42));
-  std::vector<test::Point> pts(n);
-  for(std::size_t i = 0; i < n; ++i) pts[perm[i]] = a.point(test::Surface_mesh::Vertex_index(static_cast<unsigned>(i)));
-  std::vector<std::vector<std::size_t>> polys;
-  for(auto f : faces(a)) {
-    polys.emplace_back();
-    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a)) polys.back().push_back(perm[v.idx()]);
-  }
-  test::Surface_mesh b;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, b);
+  std::vector<std::size_t> perm;
+  test::Surface_mesh b = test::renumbered_copy(a, 42, perm);
   const std::size_t s = 5;
   auto compare = [&](const Eigen::VectorXd& da, const Eigen::VectorXd& db) {
     double worst = 0;

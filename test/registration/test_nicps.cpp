@@ -3,6 +3,7 @@
 // the iteration callback, landmarks, bad input; template over three mesh types, target another.
 #include "spectral/spectral_test_helpers.h"
 #include "test_meshes.h"
+#include "test_renumbering.h"
 
 #include <shapecorr/evaluation/surface_distance.h>
 #include <shapecorr/mesh/primitives.h>
@@ -87,18 +88,8 @@ TEST_CASE("NICPS: a resampled copy under a small rigid motion is reached; renumb
 
   // the same template with its vertices in another order: the same fit, vertex for vertex
   const std::size_t n = tmpl.number_of_vertices();
-  std::vector<std::size_t> perm(n);
-  std::iota(perm.begin(), perm.end(), std::size_t(0));
-  std::shuffle(perm.begin(), perm.end(), std::mt19937(5));
-  std::vector<test::Point> pts(n);
-  for(std::size_t i = 0; i < n; ++i) pts[perm[i]] = tmpl.point(test::Surface_mesh::Vertex_index(static_cast<unsigned>(i)));
-  std::vector<std::vector<std::size_t>> polys;
-  for(auto f : faces(tmpl)) {
-    polys.emplace_back();
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tmpl), tmpl)) polys.back().push_back(perm[v.idx()]);
-  }
-  test::Surface_mesh shuffled;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, shuffled);
+  std::vector<std::size_t> perm;
+  test::Surface_mesh shuffled = test::renumbered_copy(tmpl, 5, perm);
   auto out2 = shuffled.add_property_map<test::Surface_mesh::Vertex_index, test::Point>("v:fit").first;
   const auto r2 = shapecorr::nicps(shuffled, target, out2);
   CHECK(r2.iterations.size() == r.iterations.size());

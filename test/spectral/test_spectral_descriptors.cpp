@@ -2,6 +2,7 @@
 // scaling (where plain HKS at fixed times is not invariant), output through property maps, errors,
 // and ranking of ground-truth matches on a TOSCA pair (skips without ../shared/data).
 #include "spectral_test_helpers.h"
+#include "test_renumbering.h"
 
 #include <shapecorr/io.h>
 #include <shapecorr/spectral.h>
@@ -47,18 +48,8 @@ TEST_CASE("HKS, WKS, SI-HKS are invariant under vertex renumbering; property-map
   test::Surface_mesh a;
   test::make_ellipsoid(a, 3);
   const std::size_t n = a.number_of_vertices();
-  std::vector<std::size_t> perm(n);
-  std::iota(perm.begin(), perm.end(), std::size_t(0));
-  std::shuffle(perm.begin(), perm.end(), std::mt19937(5));
-  std::vector<test::Point> pts(n);
-  for(std::size_t i = 0; i < n; ++i) pts[perm[i]] = a.point(test::Surface_mesh::Vertex_index(static_cast<unsigned>(i)));
-  std::vector<std::vector<std::size_t>> polys;
-  for(auto f : faces(a)) {
-    polys.emplace_back();
-    for(auto v : CGAL::vertices_around_face(halfedge(f, a), a)) polys.back().push_back(perm[v.idx()]);
-  }
-  test::Surface_mesh b;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, b);
+  std::vector<std::size_t> perm;
+  test::Surface_mesh b = test::renumbered_copy(a, 5, perm);
   typedef test::Surface_mesh::Vertex_index V;
   auto ha = a.add_property_map<V, std::vector<double>>("v:hks").first;
   auto hb = b.add_property_map<V, std::vector<double>>("v:hks").first;

@@ -99,16 +99,21 @@ private:
   Triangle_arrays m_arrays;
 };
 
-/// The flat copy of a mesh that has triangles and finite coordinates only; otherwise an
-/// `Invalid_input` whose message starts with `context` and names `which` ("the source", "T").
-template <typename TriangleMesh, typename NamedParameters>
-Triangle_arrays finite_triangle_arrays(const TriangleMesh& tm, const NamedParameters& np, const std::string& context, const std::string& which) {
-  Triangle_arrays a = Indexed_mesh<TriangleMesh>(tm, np).arrays();
+/// Throws `Invalid_input` (message starting with `context`, naming `which`: "the source", "T")
+/// unless the flat copy has triangles and finite coordinates only.
+inline void require_finite_triangles(const Triangle_arrays& a, const std::string& context, const std::string& which) {
   if(a.number_of_faces() == 0) throw Invalid_input(Mesh_defect::empty_mesh, context + ": " + which + " has no triangle");
   for(Eigen::Index i = 0; i < a.V.rows(); ++i)
     if(!a.V.row(i).allFinite())
       throw Invalid_input(Mesh_defect::non_finite_coordinate,
                           context + ": vertex " + std::to_string(i) + " of " + which + " has a non-finite coordinate");
+}
+
+/// The flat copy of a mesh, checked by `require_finite_triangles`.
+template <typename TriangleMesh, typename NamedParameters>
+Triangle_arrays finite_triangle_arrays(const TriangleMesh& tm, const NamedParameters& np, const std::string& context, const std::string& which) {
+  Triangle_arrays a = Indexed_mesh<TriangleMesh>(tm, np).arrays();
+  require_finite_triangles(a, context, which);
   return a;
 }
 

@@ -261,7 +261,8 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
   typedef Eigen::SparseMatrix<double> Sparse;
   const auto t0 = std::chrono::steady_clock::now();
   const internal::Indexed_mesh<TemplateMesh> indexed(tmpl, np1);
-  const internal::Triangle_arrays R0 = internal::finite_triangle_arrays(tmpl, np1, "nicps", "the template");
+  const internal::Triangle_arrays& R0 = indexed.arrays();
+  internal::require_finite_triangles(R0, "nicps", "the template");
   const internal::Triangle_arrays T = internal::finite_triangle_arrays(target, np2, "nicps", "the target");
   const std::size_t n = R0.number_of_vertices();
 
