@@ -148,3 +148,12 @@ if ga:
     if ap:
         line += f"; all-pairs fast marching alone: {ms(ap)/1e3:.2f} s (ratio {ms(ga)/ms(ap):.2f})"
     print(line)
+# Registration (bench_registration): a NICPS iteration against its own numeric factorization.
+nv = runs.get("BM_Nicps_Vertebra/iterations:1/real_time")
+if nv:
+    print(f"NICPS {int(nv['template_vertices'])} -> {int(nv['target_vertices'])} vertices: {int(nv['iterations'])} iterations, {ms(nv)/1e3:.2f} s; "
+          f"per iteration {nv['iteration_ms']:.1f} ms = {nv['iteration_over_factorization']:.2f}x its factorization ({nv['factorization_ms']:.1f} ms), "
+          f"search {nv['search_ms']:.1f} ms; peak RSS {nv['peak_rss_mb']:.0f} MB")
+ra = runs.get("BM_RigidAlignment_Vertebra/iterations:3/real_time")
+if ra:
+    print(f"rigid ICP (no initialization), same meshes: {ms(ra):.0f} ms")

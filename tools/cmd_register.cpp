@@ -100,14 +100,21 @@ void pair_landmarks(Landmarks& s, Landmarks& t) {
                                       std::to_string(t.points.size()) + " target landmarks (and their ids differ)");
 }
 
-// `mesh` coloured by the distance of each of its vertices to `target`.
-void write_distance_map(const std::string& path, Mesh& mesh, const Mesh& target) {
+// `mesh` coloured by the distance of each of its vertices to `target`: a coloured PLY (.ply), or
+// a picture of it from both sides with a colour bar (.png).
+void write_distance_map(const std::string& path, Mesh& mesh, const Mesh& target, const std::string& title) {
   auto d = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0.0).first;
   shapecorr::compute_distances_to_surface(mesh, target, d);
   std::vector<double> values;
   for(vertex_descriptor v : vertices(mesh)) values.push_back(d[v]);
   mesh.remove_property_map(d);
-  shapecorr::write_colored_ply(path, mesh, values);
+  if(extension(path) == "png") {
+    shapecorr::Mesh_picture_options o;
+    o.title = title;
+    shapecorr::write_colored_mesh_png(path, mesh, values, o);
+  } else {
+    shapecorr::write_colored_ply(path, mesh, values);
+  }
 }
 
 nlohmann::json distances_json(const shapecorr::Surface_distance& d) {
@@ -118,16 +125,14 @@ int run_register(const Args& a) {
   Mesh source = read_mesh(a, 0);
   const Mesh target = read_mesh(a, 1);
   const std::string output = a.require("output");
-  const std::string pre = a.get("pre-align", a.has("source-landmarks") ? "landmarks" : "pca");
+  const std::string pre = a.get("pre-align", a.has("landmarks") ? "landmarks" : "pca");
   shapecorr::Rigid_initialization init;
   if(pre == "pca") init = shapecorr::Rigid_initialization::PRINCIPAL_AXES;
   else if(pre == "landmarks") init = shapecorr::Rigid_initialization::LANDMARKS;
   else if(pre == "none") init = shapecorr::Rigid_initialization::NONE;
   else throw Usage_error("register: --pre-align must be pca, landmarks or none");
-  if(a.has("source-landmarks") != a.has("target-landmarks"))
-    throw Usage_error("register: --source-landmarks and --target-landmarks go together");
-  if(init == shapecorr::Rigid_initialization::LANDMARKS && !a.has("source-landmarks"))
-    throw Usage_error("register: --pre-align landmarks needs --source-landmarks and --target-landmarks");
+  if(init == shapecorr::Rigid_initialization::LANDMARKS && !a.has("landmarks"))
+    throw Usage_error("register: --pre-align landmarks needs --landmarks SOURCE_LANDMARKS TARGET_LANDMARKS");
   const std::string method = a.get("method", "rigid");
   if(method != "rigid" && method != "nicps") throw Usage_error("register: --method must be rigid or nicps");
   const std::string regularizer = a.get("regularizer", "combinatorial");
@@ -139,21 +144,27 @@ int run_register(const Args& a) {
   if(method == "rigid" && a.has("regularizer")) throw Usage_error("register: --regularizer applies to --method nicps");
   const std::string metric = a.get("metric", "point-to-plane");
   if(metric != "point-to-plane" && metric != "point-to-point") throw Usage_error("register: --metric must be point-to-plane or point-to-point");
+  double max_pair = std::numeric_limits<double>::infinity();
+  if(a.has("max-pair-distance")) {
+    if(method != "nicps") throw Usage_error("register: --max-pair-distance applies to --method nicps");
+    max_pair = to_double(a.get("max-pair-distance"), "register: --max-pair-distance", 0, 1e300, true);
+  }
   const std::size_t iterations = to_count(a.get("iterations", "50"), "--iterations", 0, method == "nicps" ? 10000 : 100000);
   for(const char* map : {"distance-map", "distance-map-before"})
-    if(a.has(map) && extension(a.get(map)) != "ply") throw Usage_error(std::string("register: --") + map + " must end in .ply");
+    if(a.has(map) && extension(a.get(map)) != "ply" && extension(a.get(map)) != "png")
+      throw Usage_error(std::string("register: --") + map + " must end in .ply (coloured mesh) or .png (picture)");
   const std::string ext = extension(output);
   if(ext != "ply" && ext != "off" && ext != "obj" && ext != "stl") throw Usage_error("register: --output must end in .ply, .off, .obj or .stl");
 
   Landmarks ls, lt;
-  if(a.has("source-landmarks")) {
-    ls = read_landmarks(a.get("source-landmarks"));
-    lt = read_landmarks(a.get("target-landmarks"));
+  if(a.has("landmarks")) {
+    ls = read_landmarks(a.values("landmarks")[0]);
+    lt = read_landmarks(a.values("landmarks")[1]);
     pair_landmarks(ls, lt);
   }
   const auto t0 = std::chrono::steady_clock::now();
   const shapecorr::Surface_distance before = shapecorr::surface_distance(source, target);
-  if(a.has("distance-map-before")) write_distance_map(a.get("distance-map-before"), source, target);
+  if(a.has("distance-map-before")) write_distance_map(a.get("distance-map-before"), source, target, "distance to the target before");
   namespace SP = shapecorr::parameters;
   const auto np = SP::rigid_initialization(init)
                       .allow_scaling(a.has("scale"))
@@ -189,7 +200,11 @@ int run_register(const Args& a) {
     };
     auto fitted = source.add_property_map<vertex_descriptor, K::Point_3>("v:nicps").first;
     nr = shapecorr::nicps(source, target, fitted,
-                          SP::nicps_regularizer(reg).number_of_iterations(iterations).landmark_correspondences(steer).iteration_callback(progress));
+                          SP::nicps_regularizer(reg)
+                              .number_of_iterations(iterations)
+                              .landmark_correspondences(steer)
+                              .maximum_pair_distance(max_pair)
+                              .iteration_callback(progress));
     for(vertex_descriptor v : vertices(source)) source.point(v) = fitted[v];
     source.remove_property_map(fitted);
   }
@@ -215,7 +230,7 @@ int run_register(const Args& a) {
     }
     lm_after = shapecorr::landmark_distances(moved, lt.points);
   }
-  if(a.has("distance-map")) write_distance_map(a.get("distance-map"), source, target);
+  if(a.has("distance-map")) write_distance_map(a.get("distance-map"), source, target, "distance to the target after " + method);
   if(a.has("report")) {
     nlohmann::json j;
     j["source"] = a.positional[0];
@@ -280,7 +295,7 @@ int run_register(const Args& a) {
 const Command& register_command() {
   static const Command c{
       "register",
-      "register SOURCE TARGET --output FILE [--method rigid|nicps] [--pre-align pca|landmarks|none] [--source-landmarks FILE --target-landmarks FILE] [options]",
+      "register SOURCE TARGET --output FILE [--method rigid|nicps] [--pre-align pca|landmarks|none] [--landmarks S T] [options]",
       "Registers SOURCE (the template) to TARGET (thesis chapter 6). Rigid: an initialization from principal axes "
       "(default; every proper sign choice tried), landmark pairs (default when landmark files are given) or none, "
       "then trimmed ICP. NICPS: the rigid alignment, then the non-rigid fit that keeps SOURCE's connectivity "
@@ -292,13 +307,13 @@ const Command& register_command() {
                                  {"method", "rigid|nicps", "rigid alignment only (default), or followed by NICPS"},
                                  {"regularizer", "combinatorial|cotangent|edge", "NICPS's regularizer (default combinatorial)"},
                                  {"pre-align", "pca|landmarks|none", "initialization (default pca, landmarks with landmark files)"},
-                                 {"source-landmarks", "FILE", "landmarks of SOURCE (JSON or text)"},
-                                 {"target-landmarks", "FILE", "landmarks of TARGET, same ids or order"},
+                                 {"landmarks", "S T", "landmark files of SOURCE and of TARGET (JSON or text; paired by id, else by order)"},
                                  {"scale", "", "also a uniform scale (a similarity)"},
                                  {"metric", "point-to-plane|point-to-point", "the ICP distance (default point-to-plane)"},
+                                 {"max-pair-distance", "D", "NICPS drops pairs longer than D (mesh units; default none): outliers, extra parts"},
                                  {"iterations", "N", "iterations of the method, at most: ICP per start, or NICPS (default 50)"},
-                                 {"distance-map", "FILE.ply", "the registered source coloured by its distance to TARGET"},
-                                 {"distance-map-before", "FILE.ply", "SOURCE as given, coloured by its distance to TARGET"},
+                                 {"distance-map", "FILE", "the registered source coloured by its distance to TARGET: .ply, or .png (a picture of both sides, colour bar)"},
+                                 {"distance-map-before", "FILE", "SOURCE as given, coloured by its distance to TARGET (.ply or .png)"},
                                  {"report", "FILE.json", "transform, iterations, surface and landmark distances before and after"}}),
       2, 2, run_register};
   return c;

@@ -72,6 +72,19 @@ std::string wrap(const std::string& text, std::size_t indent) {
 
 } // namespace
 
+std::size_t Option::number_of_values() const {
+  if(value_name.empty()) return 0;
+  return static_cast<std::size_t>(std::count(value_name.begin(), value_name.end(), ' ')) + 1;
+}
+
+std::vector<std::string> Args::values(const std::string& k) const {
+  std::vector<std::string> out;
+  if(!has(k)) return out;
+  std::istringstream in(get(k));
+  for(std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
 Args parse_arguments(const Command& c, int argc, char** argv, int first) {
   Args a;
   a.command = c.name;
@@ -93,6 +106,13 @@ Args parse_arguments(const Command& c, int argc, char** argv, int first) {
       if(!o) throw Usage_error(unknown_option_message(c, key));
       if(o->value_name.empty()) {
         if(inline_value) throw Usage_error(c.name + ": option --" + key + " takes no value");
+      } else if(o->number_of_values() > 1) {
+        if(inline_value) throw Usage_error(c.name + ": option --" + key + " takes " + std::to_string(o->number_of_values()) + " values: --" + key + " " + o->value_name);
+        for(std::size_t k = 0; k < o->number_of_values(); ++k) {
+          if(i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
+            throw Usage_error(c.name + ": option --" + key + " needs " + std::to_string(o->number_of_values()) + " values (" + o->value_name + ")");
+          value += (k ? "\n" : "") + std::string(argv[++i]);
+        }
       } else if(!inline_value) {
         if(i + 1 >= argc) throw Usage_error(c.name + ": option --" + key + " needs a value (" + o->value_name + ")");
         value = argv[++i];

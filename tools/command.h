@@ -19,11 +19,13 @@ struct Usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// One option of a command: `--name VALUE` (value_name set) or a flag `--name`.
+/// One option of a command: `--name VALUE` (value_name set) or a flag `--name`. An option whose
+/// value_name has several words (`--landmarks S T`) takes that many values.
 struct Option {
   std::string name;
   std::string value_name; // empty: a flag
   std::string help;
+  std::size_t number_of_values() const;
 };
 
 /// The parsed arguments of one command (options already checked against its table).
@@ -36,6 +38,8 @@ struct Args {
     auto it = options.find(k);
     return it == options.end() ? def : it->second;
   }
+  /// The values of an option that takes several (`Option::number_of_values()`), in order.
+  std::vector<std::string> values(const std::string& k) const;
   std::string require(const std::string& k) const {
     if(!has(k) || get(k).empty()) throw Usage_error(command + ": missing --" + k);
     return get(k);

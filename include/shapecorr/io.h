@@ -7,6 +7,9 @@
 #define SHAPECORR_IO_H
 #include <shapecorr/io/read_polygon_soup.h>
 #include <shapecorr/io/read_triangle_mesh.h>
+#include <shapecorr/io/draw_on_picture.h>
+#include <shapecorr/io/draw_on_picture.h>
+#include <shapecorr/io/render_mesh.h>
 #include <shapecorr/io/write_colored_ply.h>
 #include <shapecorr/io/write_correspondences.h>
 #include <shapecorr/io/write_png.h>

@@ -135,3 +135,135 @@ TEST_CASE("NICPS: callback, landmarks, bad input", "[registration][nicps]") {
   bad.point(*vertices(bad).begin()) = test::Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   CHECK_THROWS_AS(shapecorr::nicps(sphere, bad, out), shapecorr::Invalid_input);
 }
+
+namespace {
+// An open tube of radius r along z over [−L/2, L/2] (nθ × nz quads, two triangles each; the seam
+// turned by `turn` radians), then bent in the xz plane around the line x = Rb (bend = 0: straight):
+// the axis becomes an arc of radius Rb, lengths along it kept.
+template <typename Mesh>
+void make_bent_tube(Mesh& m, std::size_t ntheta, std::size_t nz, double r, double L, double Rb, double turn) {
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  for(std::size_t j = 0; j <= nz; ++j)
+    for(std::size_t i = 0; i < ntheta; ++i) {
+      const double th = turn + 2 * M_PI * double(i) / double(ntheta), z = -L / 2 + L * double(j) / double(nz);
+      const double x = r * std::cos(th), y = r * std::sin(th);
+      if(Rb == 0) {
+        P.push_back({x, y, z});
+      } else {
+        const double phi = z / Rb;
+        P.push_back({Rb - (Rb - x) * std::cos(phi), y, (Rb - x) * std::sin(phi)});
+      }
+    }
+  for(std::size_t j = 0; j < nz; ++j)
+    for(std::size_t i = 0; i < ntheta; ++i) {
+      const std::size_t a = j * ntheta + i, b = j * ntheta + (i + 1) % ntheta, c = a + ntheta, d = b + ntheta;
+      T.push_back({a, b, d});
+      T.push_back({a, d, c});
+    }
+  shapecorr::internal::soup_to_mesh(P, T, m);
+}
+// Distance from p to the bent tube's surface: | |p − a| − r | with a the nearest point of the arc
+// (centre (Rb, 0, 0), radius Rb, angles within ±L/(2 Rb)); and the arc angle of p.
+double distance_to_bent_tube(const Eigen::Vector3d& p, double r, double L, double Rb, double* angle = nullptr) {
+  double phi = std::atan2(p.z(), Rb - p.x());
+  if(angle) *angle = phi;
+  phi = std::max(-L / (2 * Rb), std::min(L / (2 * Rb), phi));
+  const Eigen::Vector3d a(Rb - Rb * std::cos(phi), 0, Rb * std::sin(phi));
+  return std::abs((p - a).norm() - r);
+}
+} // namespace
+
+TEST_CASE("NICPS bends a straight tube onto a bent one of another triangulation, without sliding along it", "[registration][nicps]") {
+  const double r = 0.3, L = 2.0, Rb = 2.0; // the ends turn by ±0.5 rad
+  test::Surface_mesh straight, bent;
+  make_bent_tube(straight, 24, 20, r, L, 0, 0);
+  make_bent_tube(bent, 36, 30, r, L, Rb, 0.07);
+  for(bool reject : {true, false}) {
+    auto out = get(CGAL::dynamic_vertex_property_t<test::Point>(), straight);
+    const auto rep = shapecorr::nicps(straight, bent, out, SP::reject_boundary_pairs(reject));
+    double inner = 0, ends = 0, before = 0, end_angle = 0;
+    for(auto v : vertices(straight)) {
+      const auto& p0 = straight.point(v);
+      const auto& p = get(out, v);
+      before = std::max(before, distance_to_bent_tube(Eigen::Vector3d(p0.x(), p0.y(), p0.z()), r, L, Rb));
+      double phi = 0;
+      const double d = distance_to_bent_tube(Eigen::Vector3d(p.x(), p.y(), p.z()), r, L, Rb, &phi);
+      (std::abs(p0.z()) < L / 2 - 0.15 ? inner : ends) = std::max(std::abs(p0.z()) < L / 2 - 0.15 ? inner : ends, d);
+      if(std::abs(p0.z() - L / 2) < 1e-12) end_angle += phi / 24; // the mean arc angle of the top ring
+    }
+    INFO("boundary rejection " << reject << ": largest distance to the bent tube " << before << " -> " << inner << " (all but two rings at each end), "
+                               << ends << " (those rings); r = " << r << "; top ring at angle " << end_angle << " (0.5 expected); "
+                               << rep.iterations.size() << " iterations, " << shapecorr::to_string(rep.stop));
+    CHECK(before > 0.2);
+    CHECK(inner < 0.02 * r);
+    // the end rings: with rejection, a template vertex whose closest point is on the target's cut
+    // gets no pair (the regularizer places it); without, the cut holds it
+    CHECK(ends < (reject ? 0.15 : 0.06) * r);
+    CHECK(end_angle == Approx(0.5).margin(0.03));
+  }
+}
+
+TEST_CASE("NICPS rejects pairs on the target's boundary: an overhanging template is not pulled onto the cut", "[registration][nicps]") {
+  // the target: the unit square; the template: [−0.5, 1.5] x [0, 1], 0.05 above it
+  test::Surface_mesh target, tmpl;
+  shapecorr::make_grid(target, 24, 24);
+  shapecorr::make_grid(tmpl, 40, 20, 2.0, 1.0);
+  test::transform_points(tmpl, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(p.x() - 0.5, p.y(), 0.05); });
+  auto leftmost = [&](bool reject) {
+    auto out = get(CGAL::dynamic_vertex_property_t<test::Point>(), tmpl);
+    shapecorr::nicps(tmpl, target, out, SP::reject_boundary_pairs(reject).number_of_iterations(30));
+    double x = 1e9, zmax = 0;
+    for(auto v : vertices(tmpl)) {
+      x = std::min(x, get(out, v).x());
+      if(get(out, v).x() > 0.05 && get(out, v).x() < 0.95) zmax = std::max(zmax, std::abs(get(out, v).z()));
+    }
+    return std::make_pair(x, zmax);
+  };
+  const auto kept = leftmost(true), pulled = leftmost(false);
+  INFO("leftmost template x: " << kept.first << " with rejection, " << pulled.first << " without; height over the target " << kept.second);
+  CHECK(kept.first < -0.4);   // the overhang keeps its shape
+  CHECK(pulled.first > -0.3); // without rejection the cut pulls it in
+  CHECK(kept.second < 0.005); // and over the target the template lies on it
+}
+
+TEST_CASE("NICPS onto a target with a hole and a second, distant component", "[registration][nicps]") {
+  // the target: an ellipsoid without the faces of a cap around +z (a hole), plus a small sphere far away
+  test::Surface_mesh ellipsoid, target, tmpl;
+  make_ellipsoid(ellipsoid, 4, 1.3, 0.9, 0.75, 17);
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  for(auto v : vertices(ellipsoid)) P.push_back({ellipsoid.point(v).x(), ellipsoid.point(v).y(), ellipsoid.point(v).z()});
+  for(auto f : faces(ellipsoid)) {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    double z = 0;
+    for(auto v : CGAL::vertices_around_face(ellipsoid.halfedge(f), ellipsoid)) t[k++] = v.idx(), z += ellipsoid.point(v).z() / 3;
+    if(z < 0.7) T.push_back(t); // the cap z > 0.7 (about 0.28 across) is the hole
+  }
+  const std::size_t offset = P.size();
+  test::Surface_mesh small;
+  shapecorr::make_icosphere(small, 1);
+  for(auto v : vertices(small)) P.push_back({0.2 * small.point(v).x() + 5, 0.2 * small.point(v).y(), 0.2 * small.point(v).z()});
+  for(auto f : faces(small)) {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(small.halfedge(f), small)) t[k++] = offset + v.idx();
+    T.push_back(t);
+  }
+  shapecorr::internal::soup_to_mesh(P, T, target);
+  make_ellipsoid(tmpl, 3, 1, 1, 1);
+  auto out = tmpl.add_property_map<test::Surface_mesh::Vertex_index, test::Point>("v:fit").first;
+  // the thesis's two-way pairs: every target vertex seeks the template, the distant sphere too
+  shapecorr::nicps(tmpl, target, out);
+  double reach = 0;
+  for(auto v : vertices(tmpl)) reach = std::max(reach, out[v].x());
+  INFO("largest x of the fit without a pair distance limit: " << reach);
+  CHECK(reach > 2.0); // pulled towards the sphere at x = 5
+  // with a limit on the pair distance (0.5, above the largest initial distance 0.3), it is ignored
+  const auto rep = shapecorr::nicps(tmpl, target, out, SP::maximum_pair_distance(0.5));
+  const double residual = ellipsoid_residual(tmpl, out, 1.3, 0.9, 0.75);
+  INFO("worst relative residual to the ellipsoid, hole included: " << residual << "; " << rep.iterations.size() << " iterations");
+  CHECK(residual < 0.03); // the template closes the hole smoothly
+  CHECK_THROWS_AS(shapecorr::nicps(tmpl, target, out, SP::maximum_pair_distance(0.0)), shapecorr::Invalid_argument);
+}

@@ -22,9 +22,11 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,6 +49,9 @@ struct Nicps_iteration_record : Iteration_record {
   double alpha = 0;              ///< α_f
   std::size_t forward_pairs = 0; ///< template vertex → target surface point
   std::size_t inverse_pairs = 0; ///< target vertex → template surface point (barycentric in the unknowns)
+  double seconds = 0;               ///< wall time of the iteration
+  double search_seconds = 0;        ///< of which the correspondence search (both ways)
+  double factorization_seconds = 0; ///< of which the numeric sparse Cholesky factorization
 };
 
 /// \ingroup PkgShapeCorrRegistration
@@ -114,7 +119,8 @@ struct Search_side {
   Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> F;
   std::vector<Eigen::Vector3d> normal;
   std::vector<std::vector<std::uint32_t>> triangles; // incident triangles of each vertex
-  std::vector<char> boundary;
+  std::vector<char> boundary;                  // the vertex is on a boundary edge
+  std::vector<std::array<char, 3>> border_edge; // edge k of triangle f (opposite its corner k) is a boundary edge
   Kd_tree<3> tree;
 
   void set(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& positions, const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>& faces) {
@@ -126,19 +132,23 @@ struct Search_side {
       triangles.assign(n, {});
       for(Eigen::Index f = 0; f < F.rows(); ++f)
         for(int k = 0; k < 3; ++k) triangles[static_cast<std::size_t>(F(f, k))].push_back(static_cast<std::uint32_t>(f));
-      // boundary: an edge with one incident triangle
-      std::vector<std::pair<std::pair<int, int>, int>> edges;
+      // boundary: an edge with one incident triangle (edge k of triangle f: opposite its corner k)
+      std::vector<std::pair<std::pair<int, int>, std::pair<Eigen::Index, int>>> edges;
       for(Eigen::Index f = 0; f < F.rows(); ++f)
         for(int k = 0; k < 3; ++k) {
-          const int a = F(f, k), b = F(f, (k + 1) % 3);
-          edges.push_back({{std::min(a, b), std::max(a, b)}, 1});
+          const int a = F(f, (k + 1) % 3), b = F(f, (k + 2) % 3);
+          edges.push_back({{std::min(a, b), std::max(a, b)}, {f, k}});
         }
       std::sort(edges.begin(), edges.end());
       boundary.assign(n, 0);
+      border_edge.assign(static_cast<std::size_t>(F.rows()), {{0, 0, 0}});
       for(std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while(j < edges.size() && edges[j].first == edges[i].first) ++j;
-        if(j - i == 1) boundary[static_cast<std::size_t>(edges[i].first.first)] = boundary[static_cast<std::size_t>(edges[i].first.second)] = 1;
+        if(j - i == 1) {
+          boundary[static_cast<std::size_t>(edges[i].first.first)] = boundary[static_cast<std::size_t>(edges[i].first.second)] = 1;
+          border_edge[static_cast<std::size_t>(edges[i].second.first)][static_cast<std::size_t>(edges[i].second.second)] = 1;
+        }
         i = j;
       }
     }
@@ -156,6 +166,15 @@ struct Search_side {
     tree = Kd_tree<3>(std::move(pts));
   }
   Eigen::Vector3d point(std::size_t i) const { return V.row(static_cast<Eigen::Index>(i)).transpose(); }
+  // The point of triangle t with barycentric coordinates w lies on the boundary: on a boundary
+  // edge (the weight of the opposite corner is 0) or at a boundary vertex (weight 1).
+  bool on_boundary(std::uint32_t t, const Eigen::Vector3d& w) const {
+    for(int k = 0; k < 3; ++k) {
+      if(w(k) == 0 && border_edge[t][static_cast<std::size_t>(k)]) return true;
+      if(w(k) == 1 && boundary[static_cast<std::size_t>(F(t, k))]) return true;
+    }
+    return false;
+  }
 };
 
 /// A correspondence pair: a point of the template (a vertex, or a barycentric point of a
@@ -168,9 +187,11 @@ struct Nicps_pair {
 
 /// The two-step search from vertex a of `from` (position p, normal n) to the surface of `to`:
 /// among the k nearest vertices of `to`, b0 = the nearest whose normal is within 90° of n (none:
-/// no pair); then for every vertex b of `to` within 2 |p − b0| (b0 included), with a normal
-/// within 90° and, when `skip_boundary`, not on the boundary, the closest point on b's incident
-/// triangles. At most `cap` vertices b (the nearest). Calls emit(triangle, point, barycentric).
+/// no pair); then for every vertex b of `to` within 2 |p − b0| (b0 included) with a normal within
+/// 90°, the closest point on b's incident triangles. At most `cap` vertices b (the nearest).
+/// With `skip_boundary`: no pair at all when the closest of these points lies on the boundary (a
+/// boundary edge or vertex: p is beyond a cut or over a hole, and would be pulled onto it), and
+/// no pair whose point lies on the boundary. Calls emit(triangle, point, barycentric) for each pair.
 template <typename Emit>
 void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const Search_side& to, std::size_t k, bool skip_boundary, std::size_t cap,
                      Emit&& emit) {
@@ -186,26 +207,38 @@ void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const S
   if(b0 == to.normal.size()) return;
   std::vector<std::pair<double, std::size_t>> near;
   to.tree.for_each_within(q, 2.0 * std::sqrt(d2), [&](std::size_t b, double e2) {
-    if(to.normal[b].dot(n) > 0 && !(skip_boundary && to.boundary[b])) near.emplace_back(e2, b);
+    if(to.normal[b].dot(n) > 0) near.emplace_back(e2, b);
   });
-  if(near.empty() && !(skip_boundary && to.boundary[b0])) near.emplace_back(d2, b0);
+  if(near.empty()) near.emplace_back(d2, b0);
   if(near.size() > cap) {
     std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(cap), near.end());
     near.resize(cap);
   }
+  struct Candidate {
+    std::uint32_t t;
+    Eigen::Vector3d point, w;
+    double d2;
+  };
+  std::vector<Candidate> found;
+  found.reserve(near.size());
   for(const auto& e : near) {
-    double best = std::numeric_limits<double>::infinity();
-    std::uint32_t best_t = 0;
-    Eigen::Vector3d best_p, best_w;
+    Candidate best{0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity()};
     for(std::uint32_t t : to.triangles[e.second]) {
       Eigen::Vector3d w;
       const Eigen::Vector3d c = closest_point_on_triangle(p, to.point(static_cast<std::size_t>(to.F(t, 0))), to.point(static_cast<std::size_t>(to.F(t, 1))),
                                                           to.point(static_cast<std::size_t>(to.F(t, 2))), w);
       const double dd = (c - p).squaredNorm();
-      if(dd < best) best = dd, best_t = t, best_p = c, best_w = w;
+      if(dd < best.d2) best.t = t, best.point = c, best.w = w, best.d2 = dd;
     }
-    if(std::isfinite(best)) emit(best_t, best_p, best_w);
+    if(std::isfinite(best.d2)) found.push_back(best);
   }
+  if(found.empty()) return;
+  if(skip_boundary) {
+    const auto closest = std::min_element(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.d2 < b.d2; });
+    if(to.on_boundary(closest->t, closest->w)) return;
+  }
+  for(const auto& c : found)
+    if(!(skip_boundary && to.on_boundary(c.t, c.w))) emit(c.t, c.point, c.w);
 }
 
 } // namespace internal
@@ -223,8 +256,13 @@ void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const S
 ///    within 2 |a − b0| with a compatible normal gives the closest point on its incident triangles
 ///    (at most 16 per point). Inverse pairs are barycentric points of the template's triangles,
 ///    whose positions are the unknowns. With `reject_boundary_pairs` (default true), target
-///    boundary vertices neither give nor seek pairs, so an open or cut target does not pull the
-///    template onto its cut.
+///    boundary vertices neither give nor seek pairs and forward pairs whose target point lies on
+///    a boundary edge are dropped, so an open or cut target (a hole, a cut bone) does not pull the
+///    template onto its cut: the regularizer carries the template across holes and past cuts.
+///    A target of several components is one surface to the search: every target vertex seeks
+///    the template (the inverse pairs), so a distant extra part or outliers pull it; give
+///    `maximum_pair_distance` (e.g. a few times the expected residual after the rigid alignment)
+///    to ignore them.
 /// 2. **Solve** min_x D(x) + α_f G(x) (+ landmark terms), α_f = α₀ / γ^f: one sparse symmetric
 ///    positive definite system shared by x, y and z. Its pattern is fixed by the template (pairs
 ///    couple the vertices of one triangle; G the 1- or 2-ring), analysed once and factored
@@ -241,7 +279,8 @@ void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const S
 /// | `alpha_initial`, `alpha_decay` | np1 | α₀, γ | `double` | 100, 1.1 |
 /// | `number_of_iterations` | np1 | iterations, at most | `std::size_t` | 50 |
 /// | `distance_threshold` | np1 | ε (mesh units) | `double` | 1e-4 × the target's bounding-box diagonal |
-/// | `reject_boundary_pairs` | np1 | no pairs at target boundary vertices | `bool` | `true` |
+/// | `reject_boundary_pairs` | np1 | no pairs onto the target's boundary (see 1.) | `bool` | `true` |
+/// | `maximum_pair_distance` | np1 | pairs longer than this are dropped (mesh units) | `double` | ∞ (the thesis: every pair counts) |
 /// | `landmark_correspondences` | np1 | (template vertex index, target point) pairs | `std::vector<std::pair<std::size_t, Eigen::Vector3d>>` | none |
 /// | `landmark_weight` | np1 | weight of each landmark pair (a pair of D counts 1) | `double` | 10 |
 /// | `iteration_callback` | np1 | called after each iteration; false stops | `std::function<bool(const Nicps_iteration_record&)>` | none |
@@ -273,6 +312,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
   const double diagonal = (T.V.colwise().maxCoeff() - T.V.colwise().minCoeff()).norm();
   const double epsilon = choose_parameter(get_parameter(np1, internal_np::distance_threshold), 1e-4 * diagonal);
   const bool skip_boundary = choose_parameter(get_parameter(np1, internal_np::reject_boundary_pairs), true);
+  const double max_pair = choose_parameter(get_parameter(np1, internal_np::maximum_pair_distance), std::numeric_limits<double>::infinity());
   const auto landmarks = choose_parameter(get_parameter(np1, internal_np::landmark_correspondences), std::vector<std::pair<std::size_t, Eigen::Vector3d>>());
   const double landmark_weight = choose_parameter(get_parameter(np1, internal_np::landmark_weight), 10.0);
   const auto callback = choose_parameter(get_parameter(np1, internal_np::iteration_callback), std::function<bool(const Nicps_iteration_record&)>());
@@ -281,6 +321,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
   if(!(gamma >= 1) || !std::isfinite(gamma)) throw Invalid_argument("nicps: alpha_decay must be at least 1");
   if(iterations > 10000) throw Invalid_argument("nicps: number_of_iterations above 10000");
   if(!(epsilon >= 0)) throw Invalid_argument("nicps: distance_threshold must be non-negative");
+  if(!(max_pair > 0)) throw Invalid_argument("nicps: maximum_pair_distance must be positive");
   if(!(landmark_weight >= 0) || !std::isfinite(landmark_weight)) throw Invalid_argument("nicps: landmark_weight must be finite and non-negative");
   for(const auto& l : landmarks) {
     if(l.first >= n) throw Invalid_argument("nicps: landmark vertex " + std::to_string(l.first) + " out of range (" + std::to_string(n) + " vertices)");
@@ -343,6 +384,8 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
       report.stop = Stop_reason::CONVERGED;
       break;
     }
+    const auto iteration_start = std::chrono::steady_clock::now();
+    auto seconds_since = [](std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     Nicps_iteration_record rec;
     rec.iteration = f;
     rec.alpha = alpha0 / std::pow(gamma, static_cast<double>(f));
@@ -354,6 +397,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
     parallel_for(n, threads, [&](std::size_t i, unsigned) {
       internal::two_step_search(rside.point(i), rside.normal[i], tside, k, skip_boundary, cap,
                                 [&](std::uint32_t, const Eigen::Vector3d& t, const Eigen::Vector3d&) {
+                                  if((t - rside.point(i)).norm() > max_pair) return;
                                   internal::Nicps_pair pr;
                                   pr.v[0] = static_cast<int>(i);
                                   pr.target = t;
@@ -366,7 +410,8 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
     parallel_for(m, threads, [&](std::size_t a, unsigned) {
       if(skip_boundary && tside.boundary[a]) return;
       internal::two_step_search(tside.point(a), tside.normal[a], rside, k, false, cap,
-                                [&](std::uint32_t t, const Eigen::Vector3d&, const Eigen::Vector3d& w) {
+                                [&](std::uint32_t t, const Eigen::Vector3d& on_template, const Eigen::Vector3d& w) {
+                                  if((on_template - tside.point(a)).norm() > max_pair) return;
                                   internal::Nicps_pair pr;
                                   for(int c = 0; c < 3; ++c) {
                                     pr.v[c] = R0.F(static_cast<Eigen::Index>(t), c);
@@ -376,6 +421,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
                                   inv[a].push_back(pr);
                                 });
     });
+    rec.search_seconds = seconds_since(iteration_start);
     std::vector<internal::Nicps_pair> pairs;
     for(auto& v : fwd) rec.forward_pairs += v.size(), pairs.insert(pairs.end(), v.begin(), v.end());
     for(auto& v : inv) rec.inverse_pairs += v.size(), pairs.insert(pairs.end(), v.begin(), v.end());
@@ -407,7 +453,9 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
     for(Eigen::Index i = 0; i < static_cast<Eigen::Index>(n); ++i) A.coeffRef(i, i) += damping;
     B += damping * x;
     A.makeCompressed();
+    const auto factorization_start = std::chrono::steady_clock::now();
     solver.factorize(A);
+    rec.factorization_seconds = seconds_since(factorization_start);
     if(solver.info() != Eigen::Success) throw Solver_failure("nicps: the sparse system of iteration " + std::to_string(f) + " could not be factored");
     const Eigen::MatrixXd X = solver.solve(B);
     if(!X.allFinite()) throw Solver_failure("nicps: the solution of iteration " + std::to_string(f) + " is not finite");
@@ -426,6 +474,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
     x = X;
     rec.rms_distance = rms_to_target(x);
     report.final_rms = rec.rms_distance;
+    rec.seconds = seconds_since(iteration_start);
     report.iterations.push_back(rec);
     if(callback && !callback(rec)) {
       report.stop = Stop_reason::CANCELLED;
