@@ -180,6 +180,7 @@ struct Search_side {
 /// A correspondence pair: a point of the template (a vertex, or a barycentric point of a
 /// triangle) and its partner on the target.
 struct Nicps_pair {
+  int face = -1; // the template triangle of an inverse pair; -1: a vertex (v[0], weight 1)
   int v[3] = {0, 0, 0};
   double w[3] = {1, 0, 0};
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
@@ -198,12 +199,19 @@ void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const S
   const Kd_tree<3>::Point q = {p.x(), p.y(), p.z()};
   std::size_t b0 = to.normal.size();
   double d2 = 0;
-  for(const auto& c : to.tree.k_nearest(q, k))
-    if(to.normal[c.first].dot(n) > 0) {
-      b0 = c.first;
-      d2 = c.second;
-      break;
-    }
+  // the first compatible vertex of the k nearest: asked for 2, 8, 32, ... nearest until found or k
+  // reached (the same vertex as scanning all k, with far fewer neighbours fetched: most find one
+  // among the first two)
+  for(std::size_t asked = 0, ask = std::min<std::size_t>(k, 2); b0 == to.normal.size() && asked < k; asked = ask, ask = std::min(k, 4 * ask)) {
+    const auto nearest = to.tree.k_nearest(q, ask);
+    for(std::size_t i = asked; i < nearest.size(); ++i)
+      if(to.normal[nearest[i].first].dot(n) > 0) {
+        b0 = nearest[i].first;
+        d2 = nearest[i].second;
+        break;
+      }
+    if(nearest.size() < ask) break; // fewer vertices than asked for
+  }
   if(b0 == to.normal.size()) return;
   std::vector<std::pair<double, std::size_t>> near;
   to.tree.for_each_within(q, 2.0 * std::sqrt(d2), [&](std::size_t b, double e2) {
@@ -219,7 +227,7 @@ void two_step_search(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const S
     Eigen::Vector3d point, w;
     double d2;
   };
-  std::vector<Candidate> found;
+  std::vector<Candidate> found; // per vertex of `near`, the closest point of its incident triangles
   found.reserve(near.size());
   for(const auto& e : near) {
     Candidate best{0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity()};
@@ -353,11 +361,25 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
   for(Eigen::Index i = 0; i < static_cast<Eigen::Index>(n); ++i) pattern.emplace_back(i, i, 0.0);
   for(int k = 0; k < Q.outerSize(); ++k)
     for(Sparse::InnerIterator it(Q, k); it; ++it) pattern.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), 0.0);
-  Sparse P(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  P.setFromTriplets(pattern.begin(), pattern.end());
-  P.makeCompressed();
+  Sparse A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  A.setFromTriplets(pattern.begin(), pattern.end());
+  A.makeCompressed();
   Eigen::SimplicialLDLT<Sparse> solver;
-  solver.analyzePattern(P);
+  solver.analyzePattern(A);
+  // where each entry of the pattern is stored: every iteration writes the values in place
+  auto slot = [&](int row, int col) -> std::size_t {
+    const int* inner = A.innerIndexPtr();
+    const int* begin = inner + A.outerIndexPtr()[col];
+    const int* end = inner + A.outerIndexPtr()[col + 1];
+    return static_cast<std::size_t>(std::lower_bound(begin, end, row) - inner);
+  };
+  std::vector<std::size_t> diagonal_slot(n), face_slot(static_cast<std::size_t>(9 * R0.F.rows())), q_slot;
+  for(std::size_t i = 0; i < n; ++i) diagonal_slot[i] = slot(static_cast<int>(i), static_cast<int>(i));
+  for(Eigen::Index f = 0; f < R0.F.rows(); ++f)
+    for(int a = 0; a < 3; ++a)
+      for(int b = 0; b < 3; ++b) face_slot[static_cast<std::size_t>(9 * f + 3 * a + b)] = slot(R0.F(f, a), R0.F(f, b));
+  for(int k = 0; k < Q.outerSize(); ++k)
+    for(Sparse::InnerIterator it(Q, k); it; ++it) q_slot.push_back(slot(static_cast<int>(it.row()), static_cast<int>(it.col())));
 
   Eigen::MatrixXd x0(static_cast<Eigen::Index>(n), 3), x;
   x0 = R0.V;
@@ -413,6 +435,7 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
                                 [&](std::uint32_t t, const Eigen::Vector3d& on_template, const Eigen::Vector3d& w) {
                                   if((on_template - tside.point(a)).norm() > max_pair) return;
                                   internal::Nicps_pair pr;
+                                  pr.face = static_cast<int>(t);
                                   for(int c = 0; c < 3; ++c) {
                                     pr.v[c] = R0.F(static_cast<Eigen::Index>(t), c);
                                     pr.w[c] = w(c);
@@ -433,26 +456,31 @@ Nicps_report nicps(const TemplateMesh& tmpl, const TargetMesh& target, VertexPoi
     }
 
     // assemble A = Σ w wᵀ + α Q + damping, B = Σ w t + α Q x⁰ + damping x
-    std::vector<Eigen::Triplet<double>> trip(pattern);
+    // (the values written in place into the fixed pattern)
+    double* value = A.valuePtr();
+    std::fill(value, value + A.nonZeros(), 0.0);
+    for(std::size_t k = 0; k < q_slot.size(); ++k) value[q_slot[k]] += rec.alpha * Q.valuePtr()[k];
     Eigen::MatrixXd B = rec.alpha * Qx0;
-    for(const auto& pr : pairs)
-      for(int a = 0; a < 3; ++a) {
-        if(pr.w[a] == 0) continue;
-        B.row(pr.v[a]) += pr.w[a] * pr.target.transpose();
-        for(int b = 0; b < 3; ++b)
-          if(pr.w[b] != 0) trip.emplace_back(pr.v[a], pr.v[b], pr.w[a] * pr.w[b]);
+    for(const auto& pr : pairs) {
+      if(pr.face < 0) {
+        value[diagonal_slot[static_cast<std::size_t>(pr.v[0])]] += 1.0;
+        B.row(pr.v[0]) += pr.target.transpose();
+        continue;
       }
+      for(int a = 0; a < 3; ++a) {
+        B.row(pr.v[a]) += pr.w[a] * pr.target.transpose();
+        for(int b = 0; b < 3; ++b) value[face_slot[static_cast<std::size_t>(9 * pr.face + 3 * a + b)]] += pr.w[a] * pr.w[b];
+      }
+    }
     for(const auto& l : landmarks) {
-      trip.emplace_back(static_cast<int>(l.first), static_cast<int>(l.first), landmark_weight);
+      value[diagonal_slot[l.first]] += landmark_weight;
       B.row(static_cast<Eigen::Index>(l.first)) += landmark_weight * l.second.transpose();
     }
-    Sparse A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    A.setFromTriplets(trip.begin(), trip.end());
-    A += rec.alpha * Q;
-    const double damping = 1e-9 * std::max(1e-300, A.diagonal().cwiseAbs().mean());
-    for(Eigen::Index i = 0; i < static_cast<Eigen::Index>(n); ++i) A.coeffRef(i, i) += damping;
+    double mean_diagonal = 0;
+    for(std::size_t i = 0; i < n; ++i) mean_diagonal += std::abs(value[diagonal_slot[i]]) / static_cast<double>(n);
+    const double damping = 1e-9 * std::max(1e-300, mean_diagonal);
+    for(std::size_t i = 0; i < n; ++i) value[diagonal_slot[i]] += damping;
     B += damping * x;
-    A.makeCompressed();
     const auto factorization_start = std::chrono::steady_clock::now();
     solver.factorize(A);
     rec.factorization_seconds = seconds_since(factorization_start);
