@@ -465,7 +465,10 @@ def one_run(job):
         cmd = ["prlimit", f"--as={memory * 1024 * 1024}", "--"] + cmd
     env = dict(os.environ)
     if sanitized:
-        env["ASAN_OPTIONS"] = "detect_leaks=1:abort_on_error=0:exitcode=99:allocator_may_return_null=0"
+        # the cap of a sanitized run: ASan's own RSS limit (its shadow memory defeats prlimit --as), and
+        # failed allocations returned as null so that the program reports them as bad input
+        env["ASAN_OPTIONS"] = (f"detect_leaks=1:abort_on_error=0:exitcode=99:allocator_may_return_null=1:"
+                               f"hard_rss_limit_mb={memory * 3 if memory else 0}")
         env["UBSAN_OPTIONS"] = "print_stacktrace=1:halt_on_error=1:exitcode=98"
     t0 = time.monotonic()
     with tempfile.TemporaryFile() as fo, tempfile.TemporaryFile() as fe:
@@ -531,6 +534,11 @@ def mesh_jobs(bin_, path, work, base):
         ([bin_, "descriptors", path, "--type", "gsc", "--rows", "16", "--columns", "16", "--output", csv] + q, name, [csv], False),
         ([bin_, "match", path, base, "--descriptor", "spin-contour", "--points", "4", "--output", txt] + q, name, [txt], False),
         ([bin_, "match", base, path, "--descriptor", "wks", "--eigenpairs", "8", "--points", "3", "--output", txt] + q, name, [txt], False),
+        # register both ways (the picture is not checked for numbers: it is binary)
+        ([bin_, "register", path, base, "--iterations", "3", "--output", o + "_reg.ply", "--report", o + "_reg.json", "--distance-map",
+          o + "_reg.png"] + q, name, [o + "_reg.ply", o + "_reg.json"], False),
+        ([bin_, "register", base, path, "--method", "nicps", "--iterations", "2", "--output", o + "_nicps.off", "--distance-map",
+          o + "_nicps.ply"] + q, name, [o + "_nicps.off", o + "_nicps.ply"], False),
     ]
 
 
@@ -551,6 +559,7 @@ def parameter_jobs(bin_, base, flat, work):
         "descriptors-gsc": (["descriptors", base, "--type", "gsc", "--output", o + ".csv"], ["--rows", "--columns"],
                             ["--support", "--agd-radius"]),
         "match": (["match", base, flat, "--descriptor", "spin-contour", "--output", o + ".txt"], ["--points", "--seed", "--candidates"], []),
+        "register": (["register", base, flat, "--method", "nicps", "--output", o + ".ply"], ["--iterations"], ["--max-pair-distance"]),
     }
     for name, (args, ints, reals) in per_command.items():
         for opt in ints:
@@ -561,7 +570,31 @@ def parameter_jobs(bin_, base, flat, work):
                 jobs.append(([bin_] + args + [opt, v, "--quiet"], opt, [], False))
         jobs.append(([bin_] + args + ["--no-such-option", "1"], "--no-such-option", [], False))
         jobs.append(([bin_] + args + ["extra_positional"], "", [], False))
-    for sub in ["info", "generate", "geodesics", "sample", "agd", "descriptors", "match", "nonsense", ""]:
+    # landmark files: malformed JSON and text, non-finite or missing coordinates, counts that differ
+    landmarks = {
+        "lm_good.txt": "1 0 0\n0 1 0\n0 0 1\n-1 0 0\n",
+        "lm_three.txt": "1 0 0\n0 1 0\n0 0 1\n",
+        "lm_nan.txt": "1 0 0\nnan 1 0\n0 0 1\n-1 0 0\n",
+        "lm_two_values.txt": "1 0\n0 1 0\n0 0 1\n",
+        "lm_words.txt": "a b c\n",
+        "lm_empty.json": "",
+        "lm_broken.json": "[{\"id\": \"a\", \"coordinates\": [1, 0",
+        "lm_no_coordinates.json": "[{\"id\": \"a\"}]",
+        "lm_string_coordinate.json": "[{\"id\": \"a\", \"coordinates\": [\"1\", 0, 0]}]",
+        "lm_huge.json": "[{\"id\": \"a\", \"coordinates\": [1e400, 0, 0]}]",
+        "lm_collinear.txt": "0 0 0\n1 0 0\n2 0 0\n3 0 0\n",
+    }
+    for name, text in landmarks.items():
+        with open(os.path.join(work, name), "w") as f:
+            f.write(text)
+    good = os.path.join(work, "lm_good.txt")
+    for name in landmarks:
+        if name != "lm_good.txt":
+            path = os.path.join(work, name)
+            jobs.append(([bin_, "register", base, base, "--landmarks", good, path, "--output", o + ".ply", "--quiet"], name, [o + ".ply"], False))
+    jobs.append(([bin_, "register", base, base, "--landmarks", good, "--output", o + ".ply"], "--landmarks", [], False))
+    jobs.append(([bin_, "register", base, base, "--landmarks", good, "/no/such/landmarks.json", "--output", o + ".ply"], "", [], False))
+    for sub in ["info", "generate", "geodesics", "sample", "agd", "descriptors", "match", "register", "nonsense", ""]:
         jobs.append(([bin_, sub] if sub else [bin_], "", [], False))
     jobs.append(([bin_, "geodesics", base, "--source", "0,99999", "--output", o + ".csv"], "", [], False))
     jobs.append(([bin_, "geodesics", base, "--source", "0", "--method", "magic", "--output", o + ".csv"], "", [], False))

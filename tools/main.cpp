@@ -24,9 +24,13 @@ std::string error_kind(const shapecorr::Error& e) {
 int main(int argc, char** argv) {
   using namespace cli;
   const std::string first = argc < 2 ? "" : argv[1];
-  if(argc < 2 || first == "--help" || first == "-h" || first == "help") {
+  if(argc < 2) { // bad usage: one line on stderr, like every other usage error
+    std::cerr << "shapecorr: missing COMMAND; 'shapecorr --help' lists the commands\n";
+    return 2;
+  }
+  if(first == "--help" || first == "-h" || first == "help") {
     std::cout << program_help();
-    return argc < 2 ? 2 : 0;
+    return 0;
   }
   if(first == "--version") {
     std::cout << "shapecorr 0.1.0\n";

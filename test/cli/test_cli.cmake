@@ -325,4 +325,8 @@ run(0 register sphere.off ell.off --method nicps --iterations 2 --max-pair-dista
 run(2 register sphere.off sphere.off --pre-align landmarks --output x.ply)
 run(2 register sphere.off sphere.off --output x.txt)
 run(2 register sphere.off --output x.ply)
+run(2) # no command: one line on stderr
+if(NOT LAST_ERR MATCHES "^shapecorr: missing COMMAND[^\n]*\n$")
+  message(FATAL_ERROR "shapecorr without a command: '${LAST_ERR}'")
+endif()
 message(STATUS "cli end-to-end: all checks passed")
