@@ -68,7 +68,7 @@ std::string binary_stl(std::uint32_t declared, int facets) {
 }
 } // namespace
 
-TEST_CASE("regression 21.2: a PLY face index of -1 is an error, not the last vertex", "[io][regression]") {
+TEST_CASE("regression 31.2: a PLY face index of -1 is an error, not the last vertex", "[io][regression]") {
   CHECK(read_error("neg.ply", ply_header3 + "0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n") == "line 13: face 0 refers to vertex -1 (negative), but there are 3 vertices");
   CHECK(read_error("neg_le.ply", binary_ply(true, -1)).find("face 0 refers to vertex -1 (negative)") != std::string::npos);
   CHECK(read_error("neg_be.ply", binary_ply(false, -1)).find("byte ") == 0);
@@ -78,7 +78,7 @@ TEST_CASE("regression 21.2: a PLY face index of -1 is an error, not the last ver
                     Catch::Contains("negative"));
 }
 
-TEST_CASE("regression 21.2: OFF indices past 2^64 or fractional are errors", "[io][regression]") {
+TEST_CASE("regression 31.2: OFF indices past 2^64 or fractional are errors", "[io][regression]") {
   const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   CHECK(read_error("big.off", head + "3 0 1 18446744073709551616\n") ==
         "line 6: face 0: vertex index is a number too large '18446744073709551616' (at most 18446744073709551615)");
@@ -87,7 +87,7 @@ TEST_CASE("regression 21.2: OFF indices past 2^64 or fractional are errors", "[i
   CHECK(read_error("negcount.off", "OFF\n-3 1 0\n") == "line 2: vertex count is a negative number '-3'");
 }
 
-TEST_CASE("regression 21.2: counts that disagree with the data are errors", "[io][regression]") {
+TEST_CASE("regression 31.2: counts that disagree with the data are errors", "[io][regression]") {
   // binary STL: fewer facets declared than present, and more
   CHECK(read_error("fewer.stl", binary_stl(1, 2)).find("declares 1 triangles, which take 134 bytes, but the file has 184") != std::string::npos);
   CHECK(read_error("more.stl", binary_stl(3, 2)).find("declares 3 triangles") != std::string::npos);
@@ -111,7 +111,7 @@ TEST_CASE("regression 21.2: counts that disagree with the data are errors", "[io
   }
 }
 
-TEST_CASE("regression 21.3: declared counts are checked against the file size before allocating", "[io][regression]") {
+TEST_CASE("regression 31.3: declared counts are checked against the file size before allocating", "[io][regression]") {
   CHECK(read_error("huge.off", "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
         "line 2: declares 300000000 faces, but the bytes after the header hold at most 4 besides 3 vertices");
   CHECK(read_error("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\n"
@@ -123,7 +123,7 @@ TEST_CASE("regression 21.3: declared counts are checked against the file size be
   CHECK(read_error("list.ply", ply).find("a list of 200 items does not fit in the 12 bytes left") != std::string::npos);
 }
 
-TEST_CASE("regression 21.6: messages say what, where and why", "[io][regression]") {
+TEST_CASE("regression 31.6: messages say what, where and why", "[io][regression]") {
   const std::string dir = test::temp_path("shapecorr_strict_dir.off");
   std::filesystem::create_directories(dir);
   std::vector<test::Point> p;
@@ -186,7 +186,7 @@ TEMPLATE_LIST_TEST_CASE("strict readers read what CGAL writes", "[io]", test::Me
     }
 }
 
-TEST_CASE("regression 21.4: coordinates that overflow double arithmetic are rejected", "[io][regression]") {
+TEST_CASE("regression 31.4: coordinates that overflow double arithmetic are rejected", "[io][regression]") {
   const std::vector<test::Point> p = {{0, 0, 0}, {1e200, 0, 0}, {0, 1e200, 0}, {0, 0, 1}};
   const auto r = shapecorr::validate_polygon_soup(p, Faces{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
   CHECK(r.out_of_range_vertices == 2);

@@ -168,7 +168,7 @@ std::string file_bytes(const std::string& path) {
 void put_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes; }
 } // namespace
 
-TEST_CASE("regression 21.1: hostile eigenbasis files are typed errors, never a crash or NaN descriptors", "[spectral][eigenbasis][io][regression]") {
+TEST_CASE("regression 31.1: hostile eigenbasis files are typed errors, never a crash or NaN descriptors", "[spectral][eigenbasis][io][regression]") {
   const std::string path = test::temp_path("test_eigenbasis_hostile.bin");
   Eigen::VectorXd values(2), mass(3);
   values << 0.0, 1.5;
