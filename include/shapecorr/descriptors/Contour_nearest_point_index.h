@@ -166,8 +166,10 @@ private:
     // both candidates at once (the same IEEE operations as the scalar code below)
     std::int32_t gaps;
     std::memcpy(&gaps, m_piece_gap.data() + j, sizeof gaps);
+    double alphas; // the two floats, copied (not loaded through a double*: j may be odd, and the load misaligned)
+    std::memcpy(&alphas, m_piece_alpha.data() + j, sizeof alphas);
     const __m128d hk = _mm_mul_pd(_mm_set1_pd(m_h), _mm_cvtepi32_pd(_mm_unpacklo_epi16(_mm_cvtsi32_si128(gaps), _mm_setzero_si128())));
-    const __m128d d = _mm_sub_pd(_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(m_piece_alpha.data() + j)))), _mm_set1_pd(x));
+    const __m128d d = _mm_sub_pd(_mm_cvtps_pd(_mm_castpd_ps(_mm_set_sd(alphas))), _mm_set1_pd(x));
     const __m128d v = _mm_add_pd(_mm_mul_pd(hk, hk), _mm_mul_pd(d, d));
     return std::min(_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)));
 #else
