@@ -47,9 +47,9 @@ inline shapecorr::Rgb_picture line_plot(const std::vector<Curve>& curves, const 
     draw_line(p, X(0), Y(fy), X(xmax), Y(fy), grey, 1);
     if(t % 2 == 0) {
       char buf[16];
-      std::snprintf(buf, sizeof buf, "%.1f", fx);
+      std::snprintf(buf, sizeof buf, "%.3g", fx);
       draw_text(p, static_cast<std::size_t>(X(fx)) - 9, H - bottom + 6, buf);
-      std::snprintf(buf, sizeof buf, "%.1f", fy);
+      std::snprintf(buf, sizeof buf, "%.3g", fy);
       draw_text(p, left - 24, static_cast<std::size_t>(Y(fy)) - 3, buf);
     }
   }

@@ -539,7 +539,14 @@ def mesh_jobs(bin_, path, work, base):
           o + "_reg.png"] + q, name, [o + "_reg.ply", o + "_reg.json"], False),
         ([bin_, "register", base, path, "--method", "nicps", "--iterations", "2", "--output", o + "_nicps.off", "--distance-map",
           o + "_nicps.ply"] + q, name, [o + "_nicps.off", o + "_nicps.ply"], False),
+        # a baseline (one per file, in turn) from the base mesh onto the file, and the distances both ways
+        ([bin_, "register", base, path, "--method", BASELINES[sum(name.encode()) % len(BASELINES)], "--iterations", "2", "--output", o + "_base.off",
+          "--report", o + "_base.json"] + q, name, [o + "_base.off", o + "_base.json"], False),
+        ([bin_, "distance", path, base, "--json"], name, [], True),
     ]
+
+
+BASELINES = ["andresen", "pauly", "cpd", "gmm-l2"]
 
 
 def parameter_jobs(bin_, base, flat, work):
@@ -560,6 +567,8 @@ def parameter_jobs(bin_, base, flat, work):
                             ["--support", "--agd-radius"]),
         "match": (["match", base, flat, "--descriptor", "spin-contour", "--output", o + ".txt"], ["--points", "--seed", "--candidates"], []),
         "register": (["register", base, flat, "--method", "nicps", "--output", o + ".ply"], ["--iterations"], ["--max-pair-distance"]),
+        "register-cpd": (["register", base, flat, "--method", "cpd", "--output", o + ".ply"], ["--iterations"], []),
+        "distance": (["distance", base, flat], [], []),
     }
     for name, (args, ints, reals) in per_command.items():
         for opt in ints:
@@ -594,7 +603,7 @@ def parameter_jobs(bin_, base, flat, work):
             jobs.append(([bin_, "register", base, base, "--landmarks", good, path, "--output", o + ".ply", "--quiet"], name, [o + ".ply"], False))
     jobs.append(([bin_, "register", base, base, "--landmarks", good, "--output", o + ".ply"], "--landmarks", [], False))
     jobs.append(([bin_, "register", base, base, "--landmarks", good, "/no/such/landmarks.json", "--output", o + ".ply"], "", [], False))
-    for sub in ["info", "generate", "geodesics", "sample", "agd", "descriptors", "match", "register", "nonsense", ""]:
+    for sub in ["info", "generate", "geodesics", "sample", "agd", "descriptors", "match", "register", "distance", "nonsense", ""]:
         jobs.append(([bin_, sub] if sub else [bin_], "", [], False))
     jobs.append(([bin_, "geodesics", base, "--source", "0,99999", "--output", o + ".csv"], "", [], False))
     jobs.append(([bin_, "geodesics", base, "--source", "0", "--method", "magic", "--output", o + ".csv"], "", [], False))

@@ -7,6 +7,7 @@
 #define SHAPECORR_REGISTRATION_REGISTRATION_REPORT_H
 
 #include <cstddef>
+#include <vector>
 
 namespace shapecorr {
 
@@ -39,8 +40,20 @@ struct Iteration_record {
   std::size_t iteration = 0; ///< 0-based
   std::size_t pairs = 0;     ///< correspondence pairs used
   double energy = 0;         ///< the objective the iteration minimized (method-specific, documented there)
-  double rms_distance = 0;   ///< root mean square distance of the pairs used, before the update
+  double rms_distance = 0;   ///< root mean square distance of the template's vertices to the target surface after the iteration
   double step = 0;           ///< the largest displacement of a point by the update (mesh units)
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// The result of a baseline registration method (`andresen_registration()`,
+/// `pauly_registration()`, `cpd_registration()`, `gmm_l2_registration()`); NICPS has its own,
+/// with more per iteration (`Nicps_report`).
+struct Registration_report {
+  std::vector<Iteration_record> iterations;        ///< one per iteration (see each method for what an iteration is)
+  Stop_reason stop = Stop_reason::ITERATION_LIMIT; ///< why it stopped
+  double initial_rms = 0; ///< root mean square distance of the template's vertices to the target surface before
+  double final_rms = 0;   ///< and after
+  double seconds = 0;     ///< wall time
 };
 
 } // namespace shapecorr
