@@ -64,7 +64,7 @@ private:
     std::uint32_t left = 0, right = 0; // children (0 = leaf)
     int axis = -1;
     double split = 0;
-    Point lo, hi;                 // bounding box
+    Point lo{}, hi{};             // bounding box
   };
 
   std::uint32_t build(std::uint32_t b, std::uint32_t e) {
