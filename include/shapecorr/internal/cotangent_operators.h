@@ -78,7 +78,9 @@ inline Eigen::VectorXd mixed_voronoi_mass(const Intrinsic_triangulation& t) {
 
 /// Graph Laplacian L = D - A of the mesh edges (each undirected edge once, weight 1): positive
 /// semi-definite, L 1 = 0.
-inline Eigen::SparseMatrix<double> combinatorial_laplacian(const Triangle_arrays& a) {
+/// The edges of the triangles, each once as (smaller index, larger index), sorted; edges whose
+/// ends coincide are left out.
+inline std::vector<std::pair<int, int>> unique_edges(const Triangle_arrays& a) {
   std::vector<std::pair<int, int>> edges;
   edges.reserve(3 * a.number_of_faces());
   for(Eigen::Index f = 0; f < a.F.rows(); ++f)
@@ -88,6 +90,11 @@ inline Eigen::SparseMatrix<double> combinatorial_laplacian(const Triangle_arrays
     }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+inline Eigen::SparseMatrix<double> combinatorial_laplacian(const Triangle_arrays& a) {
+  const std::vector<std::pair<int, int>> edges = unique_edges(a);
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(4 * edges.size());
   for(const auto& e : edges) {

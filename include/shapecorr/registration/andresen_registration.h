@@ -7,6 +7,7 @@
 #define SHAPECORR_REGISTRATION_ANDRESEN_REGISTRATION_H
 
 #include <shapecorr/exceptions.h>
+#include <shapecorr/internal/cotangent_operators.h>
 #include <shapecorr/registration/internal/registration_problem.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/registration/registration_report.h>
@@ -22,36 +23,6 @@
 #include <vector>
 
 namespace shapecorr {
-namespace internal {
-
-/// The umbrella operator of a triangle mesh as a sparse matrix: (U u)_i = mean of u_j over the
-/// neighbours j of i, minus u_i (0 for a vertex without neighbours).
-inline Eigen::SparseMatrix<double> umbrella_operator(const Triangle_arrays& a) {
-  const Eigen::Index n = static_cast<Eigen::Index>(a.number_of_vertices());
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(static_cast<std::size_t>(3 * a.F.rows()));
-  for(Eigen::Index f = 0; f < a.F.rows(); ++f)
-    for(int k = 0; k < 3; ++k) {
-      const int i = a.F(f, k), j = a.F(f, (k + 1) % 3);
-      edges.emplace_back(std::min(i, j), std::max(i, j));
-    }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::vector<double> degree(static_cast<std::size_t>(n), 0.0);
-  for(const auto& e : edges) degree[static_cast<std::size_t>(e.first)] += 1, degree[static_cast<std::size_t>(e.second)] += 1;
-  std::vector<Eigen::Triplet<double>> t;
-  for(const auto& e : edges) {
-    t.emplace_back(e.first, e.second, 1.0 / degree[static_cast<std::size_t>(e.first)]);
-    t.emplace_back(e.second, e.first, 1.0 / degree[static_cast<std::size_t>(e.second)]);
-  }
-  for(Eigen::Index i = 0; i < n; ++i)
-    if(degree[static_cast<std::size_t>(i)] > 0) t.emplace_back(i, i, -1.0);
-  Eigen::SparseMatrix<double> U(n, n);
-  U.setFromTriplets(t.begin(), t.end());
-  return U;
-}
-
-} // namespace internal
 
 /// \ingroup PkgShapeCorrRegistration
 /// The registration of Andresen & Nielsen 2001 ("Non-rigid registration by geometry-constrained
@@ -106,7 +77,12 @@ Registration_report andresen_registration(const TemplateMesh& tmpl, const Target
   const internal::Triangle_arrays& R = problem.template_arrays();
   const std::size_t n = problem.template_size();
   const Eigen::MatrixXd x = R.V;
-  const Eigen::SparseMatrix<double> U = internal::umbrella_operator(R);
+  // the combinatorial Laplacian L = D − A gives the umbrella operator U = −D⁻¹ L (mean of the
+  // neighbours minus the vertex; 0 for a vertex without neighbours) and the roughness tr(uᵀ L u)
+  const Eigen::SparseMatrix<double> L = internal::combinatorial_laplacian(R);
+  Eigen::VectorXd inverse_degree = L.diagonal();
+  for(Eigen::Index i = 0; i < inverse_degree.size(); ++i) inverse_degree(i) = inverse_degree(i) > 0 ? 1 / inverse_degree(i) : 0.0;
+  const Eigen::SparseMatrix<double> U = -(inverse_degree.asDiagonal() * L);
   const internal::Closest_point_tree& tree = problem.target_tree();
   Eigen::MatrixXd u(x.rows(), 3);
   // u_i = c(moved_i) − x_i; returns the RMS distance of `moved` to the target
@@ -125,14 +101,6 @@ Registration_report andresen_registration(const TemplateMesh& tmpl, const Target
   Registration_report report;
   report.initial_rms = project(x);
   report.final_rms = report.initial_rms;
-  // roughness Σ_edges |u_i − u_j|²: from the umbrella operator's pattern (each edge twice)
-  auto roughness = [&]() {
-    double e = 0;
-    for(int k = 0; k < U.outerSize(); ++k)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(U, k); it; ++it)
-        if(it.row() < it.col()) e += (u.row(it.row()) - u.row(it.col())).squaredNorm();
-    return e;
-  };
   for(std::size_t f = 0; f < iterations; ++f) {
     const Eigen::MatrixXd before = u;
     const Eigen::MatrixXd diffused = u + tau * (U * u);
@@ -140,13 +108,9 @@ Registration_report andresen_registration(const TemplateMesh& tmpl, const Target
     rec.iteration = f;
     rec.pairs = n;
     rec.rms_distance = project(x + diffused);
-    rec.energy = roughness();
+    rec.energy = (u.transpose() * (L * u)).trace(); // Σ_edges |u_i − u_j|²
     rec.step = (u - before).rowwise().norm().maxCoeff();
-    report.iterations.push_back(rec);
-    if(callback && !callback(rec)) {
-      report.stop = Stop_reason::CANCELLED;
-      break;
-    }
+    if(!internal::record_iteration(report, rec, callback)) break;
     if(rec.step <= 1e-7 * problem.target_diagonal()) {
       report.stop = Stop_reason::NO_MOTION;
       break;

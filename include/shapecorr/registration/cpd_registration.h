@@ -188,12 +188,7 @@ Registration_report cpd_registration(const TemplateMesh& tmpl, const TargetMesh&
     rec.step = (Tn - T).rowwise().norm().maxCoeff() * norm.scale;
     T = Tn;
     rec.rms_distance = problem.rms_to_target(norm.undo(T), threads);
-    report.iterations.push_back(rec);
-    report.final_rms = rec.rms_distance;
-    if(callback && !callback(rec)) {
-      report.stop = Stop_reason::CANCELLED;
-      break;
-    }
+    if(!internal::record_iteration(report, rec, callback)) break;
     if(std::abs(objective - previous) <= tolerance * std::abs(objective)) {
       report.stop = Stop_reason::CONVERGED;
       break;

@@ -215,9 +215,7 @@ Registration_report gmm_l2_registration(const TemplateMesh& tmpl, const TargetMe
     rec.step = (Tn - *ctx.T).rowwise().norm().maxCoeff() * ctx.norm->scale;
     *ctx.T = Tn;
     rec.rms_distance = ctx.problem->rms_to_target(ctx.norm->undo(Tn), ctx.threads);
-    ctx.report->iterations.push_back(rec);
-    ctx.report->final_rms = rec.rms_distance;
-    if(*ctx.callback && !(*ctx.callback)(rec)) {
+    if(!internal::record_iteration(*ctx.report, rec, *ctx.callback)) {
       ctx.cancelled = true;
       return 1;
     }

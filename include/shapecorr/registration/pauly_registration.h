@@ -7,6 +7,7 @@
 #define SHAPECORR_REGISTRATION_PAULY_REGISTRATION_H
 
 #include <shapecorr/exceptions.h>
+#include <shapecorr/internal/cotangent_operators.h>
 #include <shapecorr/registration/internal/registration_problem.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/registration/nicps.h>
@@ -31,19 +32,13 @@ namespace internal {
 inline Eigen::SparseMatrix<double> area_weighted_edge_form(const Triangle_arrays& a) {
   const std::size_t n = a.number_of_vertices();
   std::vector<double> area(n, 0.0);
-  std::vector<std::pair<int, int>> edges;
   for(Eigen::Index f = 0; f < a.F.rows(); ++f) {
     const Eigen::Vector3d p = a.point(static_cast<std::size_t>(a.F(f, 0))), q = a.point(static_cast<std::size_t>(a.F(f, 1))),
                           r = a.point(static_cast<std::size_t>(a.F(f, 2)));
     const double A = 0.5 * (q - p).cross(r - p).norm();
-    for(int k = 0; k < 3; ++k) {
-      area[static_cast<std::size_t>(a.F(f, k))] += A / 3;
-      const int i = a.F(f, k), j = a.F(f, (k + 1) % 3);
-      edges.emplace_back(std::min(i, j), std::max(i, j));
-    }
+    for(int k = 0; k < 3; ++k) area[static_cast<std::size_t>(a.F(f, k))] += A / 3;
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const std::vector<std::pair<int, int>> edges = unique_edges(a);
   std::vector<double> weight(edges.size(), 0.0);
   double sum = 0;
   std::size_t counted = 0;
@@ -153,7 +148,16 @@ Registration_report pauly_registration(const TemplateMesh& tmpl, const TargetMes
   Eigen::MatrixXd x = x0;
 
   Registration_report report;
-  report.initial_rms = problem.rms_to_target(x, threads);
+  // the closest target points of the current vertices: the pairs of the next iteration and the
+  // RMS distance of the last one, from one query per vertex
+  std::vector<internal::Closest_point> closest(n);
+  auto find_closest = [&]() {
+    parallel_for(n, threads, [&](std::size_t i, unsigned) { closest[i] = ttree.closest(x.row(static_cast<Eigen::Index>(i)).transpose()); });
+    double sum = 0;
+    for(const auto& c : closest) sum += c.distance * c.distance;
+    return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(n, 1)));
+  };
+  report.initial_rms = find_closest();
   report.final_rms = report.initial_rms;
   for(std::size_t f = 0; f < iterations; ++f) {
     if(report.final_rms < epsilon) {
@@ -170,7 +174,7 @@ Registration_report pauly_registration(const TemplateMesh& tmpl, const TargetMes
     parallel_for(n, threads, [&](std::size_t i, unsigned) {
       const Eigen::Index r = static_cast<Eigen::Index>(i);
       const Eigen::Vector3d p = x.row(r).transpose();
-      const internal::Closest_point cp = ttree.closest(p);
+      const internal::Closest_point& cp = closest[i];
       c.row(r) = cp.point.transpose();
       w(r) = std::exp(-(rtree.closest(cp.point).point - p).squaredNorm() / (2 * h * h));
       if(skip_boundary) {
@@ -200,8 +204,12 @@ Registration_report pauly_registration(const TemplateMesh& tmpl, const TargetMes
     rec.energy = w.dot((X - c).rowwise().squaredNorm()) + alpha * (dx.transpose() * (Q * dx)).trace();
     rec.step = (X - x).rowwise().norm().maxCoeff();
     x = X;
-    rec.rms_distance = problem.rms_to_target(x, threads);
-    if(!internal::record_iteration(report, rec, callback, epsilon)) break;
+    rec.rms_distance = find_closest();
+    if(!internal::record_iteration(report, rec, callback)) break;
+    if(rec.rms_distance < epsilon) {
+      report.stop = Stop_reason::CONVERGED;
+      break;
+    }
     if(rec.step <= 1e-7 * problem.target_diagonal()) {
       report.stop = Stop_reason::NO_MOTION;
       break;

@@ -78,18 +78,13 @@ private:
   double m_diagonal = 0;
 };
 
-/// Records an iteration in `report` and tells whether to go on: false when the callback asks to
-/// stop (CANCELLED) or the template is within `epsilon` of the target (CONVERGED).
-inline bool record_iteration(Registration_report& report, const Iteration_record& rec,
-                             const std::function<bool(const Iteration_record&)>& callback, double epsilon) {
+/// Records an iteration in `report` (and its RMS distance as the final one) and tells whether to
+/// go on: false when the callback asks to stop (the report's stop becomes CANCELLED).
+inline bool record_iteration(Registration_report& report, const Iteration_record& rec, const std::function<bool(const Iteration_record&)>& callback) {
   report.iterations.push_back(rec);
   report.final_rms = rec.rms_distance;
   if(callback && !callback(rec)) {
     report.stop = Stop_reason::CANCELLED;
-    return false;
-  }
-  if(rec.rms_distance < epsilon) {
-    report.stop = Stop_reason::CONVERGED;
     return false;
   }
   return true;
