@@ -1,0 +1,617 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file isometric_correspondence.h
+/// Fully automatic near-isometric registration (thesis chapter 5; ALGORITHMS.md): from two meshes
+/// and nothing else, sparse correspondences by furthest point sampling, descriptor trimming, the
+/// coarse matching program, local optimization and coarse-to-fine refinement; then a dense map.
+#ifndef SHAPECORR_REGISTRATION_ISOMETRIC_CORRESPONDENCE_H
+#define SHAPECORR_REGISTRATION_ISOMETRIC_CORRESPONDENCE_H
+
+#include <shapecorr/descriptors/Geodesic_spin_descriptors.h>
+#include <shapecorr/descriptors/match_descriptors.h>
+#include <shapecorr/exceptions.h>
+#include <shapecorr/geodesics/Fast_marching_geodesics.h>
+#include <shapecorr/internal/components.h>
+#include <shapecorr/internal/furthest_point_order.h>
+#include <shapecorr/internal/progress.h>
+#include <shapecorr/parameters.h>
+#include <shapecorr/registration/feature_matching.h>
+#include <shapecorr/spectral/Laplace_beltrami_eigenbasis.h>
+#include <shapecorr/spectral/compute_wave_kernel_signature.h>
+#include <shapecorr/spectral/spectral_descriptor_distance.h>
+
+#include <CGAL/GLPK_mixed_integer_program_traits.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shapecorr {
+
+/// \ingroup PkgShapeCorrRegistration
+/// The descriptor that trims the candidate pairs of the coarse program (named parameter
+/// `trim_descriptor`).
+enum class Trim_descriptor {
+  GEODESIC_SPIN_CONTOUR, ///< Geodesic Spin Contours compared by L1 (the thesis's choice)
+  WAVE_KERNEL_SIGNATURE  ///< wave kernel signatures (100 energies on 100 eigenpairs) compared by L2
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// The solver of the coarse matching program (named parameter `coarse_solver`).
+enum class Coarse_solver {
+  BRANCH_AND_BOUND,     ///< `solve_coarse_matching_branch_and_bound` (no external solver; bounded by `maximum_nodes`)
+  MIXED_INTEGER_PROGRAM ///< `solve_coarse_matching_mip` with the class's `MipTraits` (default GLPK)
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// A sparse correspondence between a source vertex and a target vertex (0-based indices of the
+/// vertex index maps), found at `level` (0: the coarse program, 1, 2, ...: refinement levels).
+struct Vertex_match {
+  std::size_t source = 0;
+  std::size_t target = 0;
+  std::size_t level = 0;
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// What one level of the method did.
+struct Isometric_level_record {
+  std::size_t level = 0;             ///< 0: coarse
+  std::size_t source_features = 0;   ///< features added on the source at this level
+  std::size_t target_features = 0;   ///< on the target
+  std::size_t candidates = 0;        ///< candidate pairs (coarse level: after trimming; refinement: all pairs)
+  std::size_t candidates_per_feature = 0; ///< coarse level: the k of the k-best trimming, after widening
+  std::size_t new_matches = 0;       ///< pairs chosen at this level
+  double objective = 0;              ///< coarse: the distortion of Eq. 5.2; refinement: the assignment cost of Eq. 5.4
+  bool optimal = false;              ///< the matching is proven optimal
+  std::size_t nodes = 0;             ///< branch-and-bound nodes (coarse level)
+  std::vector<double> energies;      ///< E of Eq. 5.3 over all matches: before local optimization, then after each sweep
+  std::vector<std::vector<Vertex_match>> snapshots; ///< all matches before local optimization, then after each sweep
+  double matching_seconds = 0;       ///< sampling, trimming and solving
+  double local_seconds = 0;          ///< local optimization
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// The result of `compute_isometric_correspondences()`.
+struct Isometric_correspondence_report {
+  std::vector<Vertex_match> matches;          ///< the sparse correspondences
+  std::vector<Isometric_level_record> levels; ///< one per level
+  double descriptor_seconds = 0;              ///< trimming descriptors
+  double dense_seconds = 0;                   ///< the dense map
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// Fully automatic near-isometric registration of a source and a target mesh, stage by stage
+/// (thesis chapter 5). `run()` does every stage; tests and users who want to stop early or look
+/// in between call the stages themselves, in this order:
+/// 1. `sample_features()`: furthest point sampling (fast-marching geodesics) of `number_of_features`
+///    (10) features per shape, from a vertex drawn with `random_seed`;
+/// 2. `trim()`: candidate pairs by descriptor distance. A fixed threshold can leave the program
+///    without a solution (the thesis warns), so the candidates are each feature's k nearest on the
+///    other shape, both ways (k = `number_of_candidates`, 3), **k widened one by one until a
+///    one-to-one matching of n̂ pairs exists**: the program is always feasible;
+/// 3. `solve_coarse()`: the program of Eq. 5.2 (`feature_matching.h`), n̂ = ⌊`match_fraction` (0.8)
+///    · min(|s|, |t|)⌋, by the dedicated branch and bound (default) or the MIP solver;
+/// 4. `optimize_locally()`: Eq. 5.3, E = Σ (g(s_i, s_j) − g(t_k, t_l))² over pairs of matches.
+///    Features of one side move, one at a time, to the vertex of lowest E within 2 mean edge
+///    lengths (the gradient step of the thesis, taken as the best vertex of the step's disc), until
+///    a sweep improves nothing or after `local_optimization_iterations` (30) sweeps; then the
+///    other side. Each move costs one single-source fast marching;
+/// 5. `refine()`: one level: `features_per_level` (20) new furthest-point features per shape, the
+///    assignment of Eq. 5.4 (cost of (i, k): Σ over matches (j, l) of |g(s_i, s_j) − g(t_k, t_l)|,
+///    solved exactly by `solve_assignment`), then local optimization; `number_of_levels` (3) times;
+/// 6. `compute_dense_map()` (beyond the thesis): each source vertex goes to the target vertex
+///    nearest in **geodesic coordinates** (the vector of its distances to the matched features:
+///    isometry-invariant, defined on partial shapes), then **spectral upsampling** on
+///    Laplace–Beltrami bases (as ZoomOut, Melzi et al. 2019: the functional map of the current
+///    map in k eigenfunctions, and back to a map by nearest neighbours in the spectral embedding,
+///    k from 20 to `number_of_eigenpairs` (60) by 5; 0 disables it, e.g. for a part of a shape).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, one connected component
+/// \tparam MipTraits a model of CGAL's `MixedIntegerProgramTraits` for `Coarse_solver::MIXED_INTEGER_PROGRAM`
+///
+/// Named parameters (the algorithm's are read from the first set; each set also carries its
+/// mesh's `vertex_point_map` and `vertex_index_map`):
+/// | name | meaning | type | default |
+/// |---|---|---|---|
+/// | `number_of_features` | coarse features per shape | `std::size_t` | 10 |
+/// | `number_of_levels` | refinement levels | `std::size_t` | 3 |
+/// | `features_per_level` | new features per shape and level | `std::size_t` | 20 |
+/// | `match_fraction` | n̂ / min(|s|, |t|) per level | `double` | 0.8 |
+/// | `trim_descriptor` | descriptor of the trimming | `Trim_descriptor` | `GEODESIC_SPIN_CONTOUR` |
+/// | `number_of_candidates` | k of the k-best trimming (widened until feasible) | `std::size_t` | 3 |
+/// | `coarse_solver` | solver of the coarse program | `Coarse_solver` | `BRANCH_AND_BOUND` |
+/// | `maximum_nodes` | work bound of the branch and bound | `std::size_t` | 5e7 |
+/// | `local_optimization_iterations` | sweeps per side and level | `std::size_t` | 30 |
+/// | `number_of_eigenpairs` | largest spectral basis of the dense map; 0: geodesic coordinates only | `std::size_t` | 60 |
+/// | `random_seed` | seed of the first sampled vertex | `unsigned` | 0 |
+/// | `support_fraction`, `agd_radius_fraction`, ... | Geodesic Spin Contour parameters | | those of `Geodesic_spin_descriptors` |
+/// | `progress_callback` | `f(done, total)` after each stage of `run()` | `std::function<void(size_t, size_t)>` | none |
+///
+/// \throws Invalid_input for an empty mesh, non-triangle faces, non-finite coordinates, a mesh
+///   with several connected components (geodesic distances between them are undefined: keep the
+///   largest one, e.g. with `CGAL::Polygon_mesh_processing::keep_largest_connected_components`),
+///   or fewer vertices than features
+template <typename TriangleMesh, typename MipTraits = CGAL::GLPK_mixed_integer_program_traits<double>>
+class Isometric_correspondence {
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  /// A point on the target: a face and barycentric coordinates.
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+
+  template <typename NamedParameters1 = parameters::Default_named_parameters, typename NamedParameters2 = parameters::Default_named_parameters>
+  Isometric_correspondence(const TriangleMesh& source, const TriangleMesh& target,
+                           const NamedParameters1& np1 = CGAL::parameters::default_values(),
+                           const NamedParameters2& np2 = CGAL::parameters::default_values())
+    : m_source(source, np1, "the source"), m_target(target, np2, "the target") {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    m_features = choose_parameter(get_parameter(np1, internal_np::number_of_features), std::size_t(10));
+    m_levels = choose_parameter(get_parameter(np1, internal_np::number_of_levels), std::size_t(3));
+    m_per_level = choose_parameter(get_parameter(np1, internal_np::features_per_level), std::size_t(20));
+    m_fraction = choose_parameter(get_parameter(np1, internal_np::match_fraction), 0.8);
+    m_trim = choose_parameter(get_parameter(np1, internal_np::trim_descriptor), Trim_descriptor::GEODESIC_SPIN_CONTOUR);
+    m_k = choose_parameter(get_parameter(np1, internal_np::number_of_candidates), std::size_t(3));
+    m_solver = choose_parameter(get_parameter(np1, internal_np::coarse_solver), Coarse_solver::BRANCH_AND_BOUND);
+    m_max_nodes = choose_parameter(get_parameter(np1, internal_np::maximum_nodes), std::size_t(50'000'000));
+    m_sweeps = choose_parameter(get_parameter(np1, internal_np::local_optimization_iterations), std::size_t(30));
+    m_eigenpairs = choose_parameter(get_parameter(np1, internal_np::number_of_eigenpairs), std::size_t(60));
+    m_seed = choose_parameter(get_parameter(np1, CGAL::internal_np::random_seed), 0u);
+    m_progress = internal::progress_of(np1);
+    if(m_features < 2) throw Invalid_argument("isometric correspondence: number_of_features must be at least 2");
+    if(!(m_fraction > 0 && m_fraction <= 1)) throw Invalid_argument("isometric correspondence: match_fraction must be in (0, 1]");
+    if(m_k == 0) throw Invalid_argument("isometric correspondence: number_of_candidates must be at least 1");
+    if(m_sweeps > 100000 || m_levels > 1000 || m_per_level > 100000)
+      throw Invalid_argument("isometric correspondence: an iteration count is out of range");
+    if(static_cast<std::size_t>(std::floor(m_fraction * double(m_features))) == 0)
+      throw Invalid_argument("isometric correspondence: match_fraction x number_of_features leaves no pair to match");
+    for(const Side* s : {&m_source, &m_target})
+      if(s->size() < m_features + 1)
+        throw Invalid_input(Mesh_defect::empty_mesh, "isometric correspondence: " + s->name + " has " + std::to_string(s->size()) +
+                                                         " vertices, fewer than the features asked for plus one (" + std::to_string(m_features + 1) + ")");
+    // the descriptors are built on demand in trim() with these parameters
+    m_make_descriptors = [this, np1, np2](Side& side, bool is_source) {
+      if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) {
+        if(is_source) side.contours = contours_of(side, np1);
+        else side.contours = contours_of(side, np2);
+      } else {
+        const Laplace_beltrami_eigenbasis basis = is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np1)
+                                                            : compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np2);
+        side.wks = wave_kernel_signature_matrix(basis);
+      }
+    };
+    m_make_basis = [np1, np2](const Side& side, bool is_source, std::size_t k) {
+      return is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), k, np1) : compute_laplace_beltrami_eigenbasis(side.mesh(), k, np2);
+    };
+  }
+
+  /// Every stage: features, trimming, the coarse program, local optimization, `number_of_levels`
+  /// refinement levels and the dense map; `progress_callback(done, total)` after each.
+  const Isometric_correspondence_report& run() {
+    const std::size_t total = 5 + m_levels;
+    std::size_t done = 0;
+    auto step = [&] { if(m_progress) m_progress(++done, total); };
+    sample_features(); step();
+    trim(); step();
+    solve_coarse(); step();
+    optimize_locally(); step();
+    for(std::size_t l = 0; l < m_levels; ++l) { refine(); step(); }
+    compute_dense_map(); step();
+    return m_report;
+  }
+
+  /// Stage 1: `number_of_features` furthest-point features per shape.
+  void sample_features() {
+    Timer t;
+    m_source.clear();
+    m_target.clear();
+    m_matches.clear();
+    m_report = Isometric_correspondence_report();
+    m_source.add_features(m_features, internal::seeded_start_vertex(m_seed, m_source.size()));
+    m_target.add_features(m_features, internal::seeded_start_vertex(m_seed, m_target.size()));
+    m_report.levels.push_back(Isometric_level_record());
+    m_report.levels.back().source_features = m_features;
+    m_report.levels.back().target_features = m_features;
+    m_report.levels.back().matching_seconds += t.seconds();
+  }
+
+  /// Stage 2: candidate pairs among the features (see the class description).
+  void trim() {
+    require(!m_source.features.empty(), "trim() needs sample_features() first");
+    Timer t;
+    if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR ? m_source.contours.empty() : m_source.wks.size() == 0) {
+      m_make_descriptors(m_source, true);
+      m_make_descriptors(m_target, false);
+    }
+    const std::size_t n = m_source.features.size(), m = m_target.features.size();
+    Eigen::MatrixXd d(n, m);
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t k = 0; k < m; ++k) d(long(i), long(k)) = descriptor_distance(m_source.features[i], m_target.features[k]);
+    m_problem = Coarse_matching_problem();
+    m_problem.source_distances = m_source.feature_distances();
+    m_problem.target_distances = m_target.feature_distances();
+    m_problem.number_of_matches = matches_for(n, m);
+    for(std::size_t k = m_k;; ++k) {
+      m_problem.candidates = k_best_both_ways(d, k);
+      if(is_feasible(m_problem) || k >= std::max(n, m)) {
+        m_report.levels[0].candidates_per_feature = k;
+        break;
+      }
+    }
+    m_report.levels[0].candidates = m_problem.candidates.size();
+    const double s = t.seconds();
+    m_report.descriptor_seconds += s;
+    m_report.levels[0].matching_seconds += s;
+  }
+
+  /// Stage 3: the coarse program (Eq. 5.2).
+  void solve_coarse() {
+    require(!m_problem.candidates.empty(), "solve_coarse() needs trim() first");
+    Timer t;
+    Feature_matching r;
+    if(m_solver == Coarse_solver::BRANCH_AND_BOUND) {
+      r = solve_coarse_matching_branch_and_bound(m_problem, m_max_nodes);
+    } else {
+      MipTraits solver;
+      r = solve_coarse_matching_mip(m_problem, solver);
+    }
+    m_matches.clear();
+    for(const Feature_pair& p : r.pairs) m_matches.push_back({p.source, p.target, 0});
+    Isometric_level_record& rec = m_report.levels[0];
+    rec.new_matches = r.pairs.size();
+    rec.objective = r.objective;
+    rec.optimal = r.optimal;
+    rec.nodes = r.nodes;
+    rec.matching_seconds += t.seconds();
+    publish();
+  }
+
+  /// Stage 4: local optimization (Eq. 5.3) of all matches, source side first.
+  void optimize_locally() {
+    require(!m_matches.empty(), "optimize_locally() needs matches (solve_coarse() first)");
+    Timer t;
+    Isometric_level_record& rec = m_report.levels.back();
+    rec.energies.assign(1, energy());
+    rec.snapshots.assign(1, vertex_matches());
+    for(int side = 0; side < 2; ++side)
+      for(std::size_t sweep = 0; sweep < m_sweeps; ++sweep) {
+        const bool moved = local_sweep(side == 0);
+        if(!moved) break;
+        rec.energies.push_back(energy());
+        rec.snapshots.push_back(vertex_matches());
+      }
+    rec.local_seconds += t.seconds();
+    publish();
+  }
+
+  /// Stage 5: one refinement level (new features, the assignment of Eq. 5.4, local optimization).
+  /// Does nothing when a shape has no vertex left to sample.
+  void refine() {
+    require(!m_matches.empty(), "refine() needs matches (solve_coarse() first)");
+    Timer t;
+    const std::size_t first_s = m_source.features.size(), first_t = m_target.features.size();
+    m_source.add_features(m_per_level);
+    m_target.add_features(m_per_level);
+    const std::size_t ns = m_source.features.size() - first_s, nt = m_target.features.size() - first_t;
+    Isometric_level_record rec;
+    rec.level = m_report.levels.size();
+    rec.source_features = ns;
+    rec.target_features = nt;
+    rec.candidates = ns * nt;
+    if(ns > 0 && nt > 0) {
+      Eigen::MatrixXd cost = Eigen::MatrixXd::Zero(long(ns), long(nt));
+      for(const Match& mt : m_matches) {
+        const Eigen::VectorXd& fs = m_source.fields[mt.source];
+        const Eigen::VectorXd& ft = m_target.fields[mt.target];
+        for(std::size_t i = 0; i < ns; ++i)
+          for(std::size_t k = 0; k < nt; ++k)
+            cost(long(i), long(k)) += std::abs(fs[long(m_source.features[first_s + i])] - ft[long(m_target.features[first_t + k])]);
+      }
+      const Feature_matching r = solve_assignment(cost, matches_for(ns, nt));
+      for(const Feature_pair& p : r.pairs) m_matches.push_back({first_s + p.source, first_t + p.target, rec.level});
+      rec.new_matches = r.pairs.size();
+      rec.objective = r.objective;
+      rec.optimal = true;
+    }
+    rec.matching_seconds = t.seconds();
+    m_report.levels.push_back(rec);
+    publish();
+    if(rec.new_matches > 0) optimize_locally();
+  }
+
+  /// Stage 6: the dense map (see the class description). Afterwards `dense_map()` has one target
+  /// vertex per source vertex.
+  void compute_dense_map() {
+    require(!m_matches.empty(), "compute_dense_map() needs matches");
+    Timer t;
+    const std::size_t K = m_matches.size();
+    Eigen::MatrixXd X(long(m_source.size()), long(K)), Y(long(m_target.size()), long(K));
+    for(std::size_t j = 0; j < K; ++j) {
+      X.col(long(j)) = m_source.fields[m_matches[j].source];
+      Y.col(long(j)) = m_target.fields[m_matches[j].target];
+    }
+    m_dense = nearest_rows(X, Y);
+    if(m_eigenpairs > 0) {
+      const std::size_t kmax = std::min({m_eigenpairs, m_source.size() - 1, m_target.size() - 1});
+      const Laplace_beltrami_eigenbasis bs = m_make_basis(m_source, true, kmax), bt = m_make_basis(m_target, false, kmax);
+      const Eigen::MatrixXd& Ps = bs.eigenvectors();
+      const Eigen::MatrixXd& Pt = bt.eigenvectors();
+      const Eigen::VectorXd& mass = bs.mass();
+      for(std::size_t k = std::min<std::size_t>(20, kmax);; k = std::min(k + 5, kmax)) {
+        // C (k x k): target coefficients -> source coefficients of the pull-back by the map
+        Eigen::MatrixXd pulled(long(m_source.size()), long(k));
+        for(std::size_t v = 0; v < m_source.size(); ++v) pulled.row(long(v)) = Pt.row(long(m_dense[v])).head(long(k));
+        const Eigen::MatrixXd C = Ps.leftCols(long(k)).transpose() * mass.asDiagonal() * pulled;
+        m_dense = nearest_rows(Ps.leftCols(long(k)) * C, Pt.leftCols(long(k)));
+        if(k == kmax) break;
+      }
+    }
+    m_report.dense_seconds = t.seconds();
+  }
+
+  /// The source's features (vertex indices), in sampling order (moved by local optimization).
+  const std::vector<std::size_t>& source_features() const { return m_source.features; }
+  /// The target's features.
+  const std::vector<std::size_t>& target_features() const { return m_target.features; }
+  /// The coarse problem built by `trim()`.
+  const Coarse_matching_problem& coarse_problem() const { return m_problem; }
+  /// The sparse matches (vertex indices) found so far, with their level.
+  std::vector<Vertex_match> matches() const { return vertex_matches(); }
+  /// The report so far.
+  const Isometric_correspondence_report& report() const { return m_report; }
+  /// After `compute_dense_map()`: the target vertex index of each source vertex.
+  const std::vector<std::size_t>& dense_map() const { return m_dense; }
+  /// The same as points of the target: a face incident to the vertex, with barycentric
+  /// coordinate 1 at that vertex.
+  Face_location dense_location(std::size_t source_vertex) const {
+    require(source_vertex < m_dense.size(), "dense_location() needs compute_dense_map() and a valid index");
+    return m_target.location_of(m_dense[source_vertex]);
+  }
+  /// The source vertex of an index.
+  vertex_descriptor source_vertex(std::size_t i) const { return m_source.engine.vertex(i); }
+  /// The target vertex of an index.
+  vertex_descriptor target_vertex(std::size_t i) const { return m_target.engine.vertex(i); }
+  /// E of Eq. 5.3 over all current matches (each unordered pair once).
+  double energy() const {
+    double e = 0;
+    for(std::size_t a = 0; a < m_matches.size(); ++a)
+      for(std::size_t b = a + 1; b < m_matches.size(); ++b) {
+        const double r = source_distance(m_matches[a].source, m_matches[b].source) - target_distance(m_matches[a].target, m_matches[b].target);
+        e += r * r;
+      }
+    return e;
+  }
+
+private:
+  struct Match {
+    std::size_t source, target, level; // positions in the feature lists
+  };
+  struct Timer {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  };
+
+  // One shape: its fast-marching engine, features and their distance fields.
+  struct Side {
+    template <typename NamedParameters>
+    Side(const TriangleMesh& tm, const NamedParameters& np, const char* which) : tm_(&tm), engine(tm, np), name(which) {
+      const internal::Triangle_arrays& a = engine.arrays();
+      internal::require_finite_triangles(a, "isometric correspondence", name);
+      std::vector<int> component;
+      if(internal::vertex_components(a.number_of_vertices(), a.F, component) > 1)
+        throw Invalid_input(Mesh_defect::several_components, "isometric correspondence: " + name +
+                                                                 " has several connected components (or isolated vertices); keep the largest one");
+      double sum = 0;
+      for(Eigen::Index f = 0; f < a.F.rows(); ++f)
+        for(int c = 0; c < 3; ++c) sum += (a.V.row(a.F(f, c)) - a.V.row(a.F(f, (c + 1) % 3))).norm();
+      mean_edge = sum / double(3 * a.F.rows());
+    }
+    const TriangleMesh& mesh() const { return *tm_; }
+    std::size_t size() const { return engine.number_of_vertices(); }
+    void clear() { features.clear(); fields.clear(); nearest.resize(0); }
+    // furthest point sampling, continued from the current features (or from `start`, dropped)
+    void add_features(std::size_t count, std::size_t start = 0) {
+      if(features.empty()) nearest = engine.distances_from(start);
+      else {
+        nearest = fields[0];
+        for(const Eigen::VectorXd& f : fields) nearest = nearest.cwiseMin(f);
+      }
+      for(std::size_t c = 0; c < count; ++c) {
+        Eigen::Index best;
+        if(!(nearest.maxCoeff(&best) > 0)) break; // every vertex is a feature
+        features.push_back(std::size_t(best));
+        fields.push_back(engine.distances_from(std::size_t(best)));
+        nearest = nearest.cwiseMin(fields.back());
+      }
+    }
+    // symmetric geodesic distance between features a and b (fast marching is not exactly symmetric)
+    double distance(std::size_t a, std::size_t b) const {
+      return 0.5 * (fields[a][long(features[b])] + fields[b][long(features[a])]);
+    }
+    Eigen::MatrixXd feature_distances() const {
+      Eigen::MatrixXd d(long(features.size()), long(features.size()));
+      for(std::size_t a = 0; a < features.size(); ++a)
+        for(std::size_t b = 0; b < features.size(); ++b) d(long(a), long(b)) = a == b ? 0.0 : distance(a, b);
+      return d;
+    }
+    Face_location location_of(std::size_t v) const {
+      return CGAL::Polygon_mesh_processing::locate_vertex(engine.vertex(v), mesh());
+    }
+
+    const TriangleMesh* tm_;
+    Fast_marching_geodesics<TriangleMesh> engine;
+    std::string name;
+    double mean_edge = 0;
+    std::vector<std::size_t> features;                    // vertex indices
+    std::vector<Eigen::VectorXd> fields;                  // distance field of each feature
+    Eigen::VectorXd nearest;                              // distance to the nearest feature
+    std::vector<Spin_contour> contours;                   // descriptors of all vertices (GSC trim)
+    Eigen::MatrixXd wks;                                  // or their WKS rows
+  };
+
+  template <typename NamedParameters>
+  static std::vector<Spin_contour> contours_of(const Side& side, const NamedParameters& np) {
+    const Geodesic_spin_descriptors<TriangleMesh> gs(side.mesh(), np);
+    std::vector<std::size_t> all(side.size());
+    for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    return gs.geodesic_spin_contours(all, {});
+  }
+
+  static void require(bool ok, const char* what) {
+    if(!ok) throw Invalid_argument(std::string("isometric correspondence: ") + what);
+  }
+
+  std::size_t matches_for(std::size_t n, std::size_t m) const {
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(m_fraction * double(std::min(n, m)))));
+  }
+
+  double descriptor_distance(std::size_t s, std::size_t t) const {
+    if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) return contour_l1_distance(m_source.contours[s], m_target.contours[t]);
+    return (m_source.wks.row(long(s)) - m_target.wks.row(long(t))).norm();
+  }
+
+  // the union of each source feature's k nearest targets and each target feature's k nearest sources
+  static std::vector<Feature_pair> k_best_both_ways(const Eigen::MatrixXd& d, std::size_t k) {
+    std::vector<Feature_pair> out;
+    std::vector<char> taken(std::size_t(d.size()), 0);
+    auto take = [&](std::size_t i, std::size_t j) {
+      if(!taken[i * std::size_t(d.cols()) + j]) { taken[i * std::size_t(d.cols()) + j] = 1; out.push_back({i, j}); }
+    };
+    auto best = [&](const Eigen::VectorXd& row) {
+      std::vector<std::size_t> idx(std::size_t(row.size()));
+      for(std::size_t j = 0; j < idx.size(); ++j) idx[j] = j;
+      const std::size_t kk = std::min(k, idx.size());
+      std::partial_sort(idx.begin(), idx.begin() + long(kk), idx.end(), [&](std::size_t a, std::size_t b) {
+        return row[long(a)] < row[long(b)] || (row[long(a)] == row[long(b)] && a < b);
+      });
+      idx.resize(kk);
+      return idx;
+    };
+    for(Eigen::Index i = 0; i < d.rows(); ++i)
+      for(std::size_t j : best(d.row(i).transpose())) take(std::size_t(i), j);
+    for(Eigen::Index j = 0; j < d.cols(); ++j)
+      for(std::size_t i : best(d.col(j))) take(i, std::size_t(j));
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  double source_distance(std::size_t a, std::size_t b) const { return m_source.distance(a, b); }
+  double target_distance(std::size_t a, std::size_t b) const { return m_target.distance(a, b); }
+
+  // One sweep over the matches, moving the features of one side; true when one moved.
+  bool local_sweep(bool move_source) {
+    Side& side = move_source ? m_source : m_target;
+    const Side& other = move_source ? m_target : m_source;
+    const double step = 2 * side.mean_edge;
+    bool moved = false;
+    for(std::size_t a = 0; a < m_matches.size(); ++a) {
+      const std::size_t mine = move_source ? m_matches[a].source : m_matches[a].target;
+      const std::size_t theirs = move_source ? m_matches[a].target : m_matches[a].source;
+      // E as a function of the position v of this feature: Σ_b (d_b(v) − g_other(a, b))²
+      std::vector<std::pair<const Eigen::VectorXd*, double>> terms;
+      for(std::size_t b = 0; b < m_matches.size(); ++b) {
+        if(b == a) continue;
+        const std::size_t mb = move_source ? m_matches[b].source : m_matches[b].target;
+        const std::size_t tb = move_source ? m_matches[b].target : m_matches[b].source;
+        terms.push_back({&side.fields[mb], other.distance(theirs, tb)});
+      }
+      auto e_at = [&](std::size_t v) {
+        double e = 0;
+        for(const auto& [field, g] : terms) {
+          const double r = (*field)[long(v)] - g;
+          e += r * r;
+        }
+        return e;
+      };
+      const Eigen::VectorXd& here = side.fields[mine];
+      const std::size_t current = side.features[mine];
+      double best_e = e_at(current);
+      std::size_t best_v = current;
+      for(std::size_t v = 0; v < side.size(); ++v)
+        if(here[long(v)] <= step && v != current) {
+          const double e = e_at(v);
+          if(e < best_e) { best_e = e; best_v = v; }
+        }
+      if(best_v != current && best_e < e_at(current) * (1 - 1e-12)) {
+        side.features[mine] = best_v;
+        side.fields[mine] = side.engine.distances_from(best_v);
+        moved = true;
+      }
+    }
+    return moved;
+  }
+
+  std::vector<Vertex_match> vertex_matches() const {
+    std::vector<Vertex_match> out;
+    for(const Match& mt : m_matches) out.push_back({m_source.features[mt.source], m_target.features[mt.target], mt.level});
+    return out;
+  }
+  void publish() { m_report.matches = vertex_matches(); }
+
+  // for each row of A, the index of the nearest row of B (Euclidean), in blocks of A's rows
+  static std::vector<std::size_t> nearest_rows(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+    std::vector<std::size_t> out(std::size_t(A.rows()));
+    const Eigen::VectorXd b2 = B.rowwise().squaredNorm();
+    const Eigen::Index block = 1024;
+    for(Eigen::Index r0 = 0; r0 < A.rows(); r0 += block) {
+      const Eigen::Index rows = std::min(block, A.rows() - r0);
+      Eigen::MatrixXd d = -2.0 * A.middleRows(r0, rows) * B.transpose();
+      d.rowwise() += b2.transpose();
+      for(Eigen::Index r = 0; r < rows; ++r) {
+        Eigen::Index j;
+        d.row(r).minCoeff(&j);
+        out[std::size_t(r0 + r)] = std::size_t(j);
+      }
+    }
+    return out;
+  }
+
+  Side m_source, m_target;
+  std::size_t m_features = 10, m_levels = 3, m_per_level = 20, m_k = 3, m_max_nodes = 50'000'000, m_sweeps = 30, m_eigenpairs = 60;
+  double m_fraction = 0.8;
+  Trim_descriptor m_trim = Trim_descriptor::GEODESIC_SPIN_CONTOUR;
+  Coarse_solver m_solver = Coarse_solver::BRANCH_AND_BOUND;
+  unsigned m_seed = 0;
+  std::function<void(std::size_t, std::size_t)> m_progress;
+  std::function<void(Side&, bool)> m_make_descriptors;
+  std::function<Laplace_beltrami_eigenbasis(const Side&, bool, std::size_t)> m_make_basis;
+  Coarse_matching_problem m_problem;
+  std::vector<Match> m_matches;
+  std::vector<std::size_t> m_dense;
+  Isometric_correspondence_report m_report;
+};
+
+/// \ingroup PkgShapeCorrRegistration
+/// Fully automatic near-isometric correspondence from `source` to `target` (thesis chapter 5 and
+/// a dense map): runs every stage of `Isometric_correspondence` and writes, for each source
+/// vertex, its point on the target into `out`.
+/// \param out a `WritablePropertyMap` from the source's `vertex_descriptor` to
+///   `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>`
+/// \param np1, np2 named parameters of the source and the target (see `Isometric_correspondence`)
+/// \returns the sparse matches and what each level did
+/// \code
+///   auto map = get(CGAL::dynamic_vertex_property_t<PMP::Face_location<Mesh, double>>(), source);
+///   shapecorr::Isometric_correspondence_report r = shapecorr::compute_isometric_correspondences(source, target, map);
+/// \endcode
+template <typename TriangleMesh, typename LocationMap, typename NamedParameters1 = parameters::Default_named_parameters,
+          typename NamedParameters2 = parameters::Default_named_parameters>
+Isometric_correspondence_report compute_isometric_correspondences(const TriangleMesh& source, const TriangleMesh& target, LocationMap out,
+                                                                  const NamedParameters1& np1 = CGAL::parameters::default_values(),
+                                                                  const NamedParameters2& np2 = CGAL::parameters::default_values()) {
+  Isometric_correspondence<TriangleMesh> method(source, target, np1, np2);
+  const Isometric_correspondence_report report = method.run();
+  for(std::size_t v = 0; v < method.dense_map().size(); ++v) put(out, method.source_vertex(v), method.dense_location(v));
+  return report;
+}
+
+} // namespace shapecorr
+
+#endif
