@@ -177,8 +177,9 @@ public:
       if(s->size() < m_features + 1)
         throw Invalid_input(Mesh_defect::empty_mesh, "isometric correspondence: " + s->name + " has " + std::to_string(s->size()) +
                                                          " vertices, fewer than the features asked for plus one (" + std::to_string(m_features + 1) + ")");
-    // the descriptors are built on demand in trim() with these parameters
-    m_make_descriptors = [this, np1, np2](Side& side, bool is_source) {
+    // the descriptors are built on demand in trim() with these parameters, without the progress
+    // callback (it reports this class's stages, not the descriptors' own progress)
+    m_make_descriptors = [this, np1 = without_progress(np1), np2 = without_progress(np2)](Side& side, bool is_source) {
       if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) {
         if(is_source) side.contours = contours_of(side, np1);
         else side.contours = contours_of(side, np2);
@@ -188,7 +189,7 @@ public:
         side.wks = wave_kernel_signature_matrix(basis);
       }
     };
-    m_make_basis = [np1, np2](const Side& side, bool is_source, std::size_t k) {
+    m_make_basis = [np1 = without_progress(np1), np2 = without_progress(np2)](const Side& side, bool is_source, std::size_t k) {
       return is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), k, np1) : compute_laplace_beltrami_eigenbasis(side.mesh(), k, np2);
     };
   }
@@ -227,14 +228,12 @@ public:
   void trim() {
     require(!m_source.features.empty(), "trim() needs sample_features() first");
     Timer t;
-    if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR ? m_source.contours.empty() : m_source.wks.size() == 0) {
-      m_make_descriptors(m_source, true);
-      m_make_descriptors(m_target, false);
-    }
+    m_make_descriptors(m_source, true);
+    m_make_descriptors(m_target, false);
     const std::size_t n = m_source.features.size(), m = m_target.features.size();
     Eigen::MatrixXd d(n, m);
     for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t k = 0; k < m; ++k) d(long(i), long(k)) = descriptor_distance(m_source.features[i], m_target.features[k]);
+      for(std::size_t k = 0; k < m; ++k) d(long(i), long(k)) = descriptor_distance(i, k);
     m_problem = Coarse_matching_problem();
     m_problem.source_distances = m_source.feature_distances();
     m_problem.target_distances = m_target.feature_distances();
@@ -453,16 +452,22 @@ private:
     std::vector<std::size_t> features;                    // vertex indices
     std::vector<Eigen::VectorXd> fields;                  // distance field of each feature
     Eigen::VectorXd nearest;                              // distance to the nearest feature
-    std::vector<Spin_contour> contours;                   // descriptors of all vertices (GSC trim)
-    Eigen::MatrixXd wks;                                  // or their WKS rows
+    std::vector<Spin_contour> contours;                   // GSC trim: the contours of the features
+    Eigen::MatrixXd wks;                                  // WKS trim: the signatures of all vertices
   };
 
+  // the contours of the current features (position i: feature i)
   template <typename NamedParameters>
   static std::vector<Spin_contour> contours_of(const Side& side, const NamedParameters& np) {
     const Geodesic_spin_descriptors<TriangleMesh> gs(side.mesh(), np);
-    std::vector<std::size_t> all(side.size());
-    for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    return gs.geodesic_spin_contours(all, {});
+    return gs.geodesic_spin_contours(side.features, {});
+  }
+
+  // `np` with an empty progress callback in front (found first)
+  template <typename NamedParameters>
+  static auto without_progress(const NamedParameters& np) {
+    typedef std::function<void(std::size_t, std::size_t)> Progress;
+    return shapecorr::Named_function_parameters<Progress, internal_np::progress_callback_t, NamedParameters>(Progress(), np);
   }
 
   static void require(bool ok, const char* what) {
@@ -475,7 +480,7 @@ private:
 
   double descriptor_distance(std::size_t s, std::size_t t) const {
     if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) return contour_l1_distance(m_source.contours[s], m_target.contours[t]);
-    return (m_source.wks.row(long(s)) - m_target.wks.row(long(t))).norm();
+    return (m_source.wks.row(long(m_source.features[s])) - m_target.wks.row(long(m_target.features[t]))).norm();
   }
 
   // the union of each source feature's k nearest targets and each target feature's k nearest sources
