@@ -172,7 +172,7 @@ struct Options {
   std::string data, out, bcpd, python = "/usr/bin/python3", helper;
   std::vector<std::string> cases = {"vertebrae", "femurs", "tosca", "sampling", "partial", "noise"};
   std::vector<std::string> methods = {"nicps", "andresen", "pauly", "cpd", "gmm-l2", "bcpd"};
-  std::size_t limit = 0, truth_points = 500, robustness_specimens = 5;
+  std::size_t skip = 0, limit = 0, truth_points = 500, robustness_specimens = 5;
   bool open3d = true;
 };
 
@@ -274,6 +274,7 @@ std::vector<std::function<Instance()>> instances(const std::string& kind, const 
       }
     }
   }
+  out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(std::min(o.skip, out.size())));
   if(o.limit > 0 && out.size() > o.limit) out.resize(o.limit);
   return out;
 }
@@ -477,7 +478,7 @@ int main(int argc, char** argv) {
   o.out = "registration-evaluation";
   o.helper = std::string(SHAPECORR_EXPERIMENTS_DIR) + "/open3d_icp.py";
   const std::string usage = "[--data DIR] [--output DIR] [--cases vertebrae,femurs,tosca,sampling,partial,noise] "
-                            "[--methods nicps,andresen,pauly,cpd,gmm-l2,bcpd] [--bcpd PATH] [--open3d 0|1] [--limit N] [--truth-points N] "
+                            "[--methods nicps,andresen,pauly,cpd,gmm-l2,bcpd] [--bcpd PATH] [--open3d 0|1] [--skip N] [--limit N] [--truth-points N] "
                             "[--robustness-specimens N]";
   const int rc = eval::parse_options(argc, argv, "evaluate_registration", usage, [&](const std::string& k, const std::string& v) {
     if(k == "--data") o.data = v;
@@ -486,6 +487,7 @@ int main(int argc, char** argv) {
     else if(k == "--methods") o.methods = split(v, ',');
     else if(k == "--bcpd") o.bcpd = v;
     else if(k == "--open3d") o.open3d = v != "0";
+    else if(k == "--skip") o.skip = std::stoul(v);
     else if(k == "--limit") o.limit = std::stoul(v);
     else if(k == "--truth-points") o.truth_points = std::max<std::size_t>(1, std::stoul(v));
     else if(k == "--robustness-specimens") o.robustness_specimens = std::stoul(v);

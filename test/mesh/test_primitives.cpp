@@ -6,6 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 TEMPLATE_LIST_TEST_CASE("generated meshes are valid", "[mesh][primitives]", test::Mesh_types) {
   TestType sphere, torus, grid;
   shapecorr::make_icosphere(sphere, 3);
@@ -24,4 +27,37 @@ TEMPLATE_LIST_TEST_CASE("generated meshes are valid", "[mesh][primitives]", test
   CHECK(rg.boundary_edges == 2 * (5 + 4));
   CHECK(rg.area == Approx(1.0));
   CHECK_THROWS_AS(shapecorr::make_icosphere(sphere, -1), shapecorr::Invalid_argument);
+}
+
+TEMPLATE_LIST_TEST_CASE("the creature: an icosphere with five limbs; levels share vertices; the bend moves one limb", "[mesh][primitives]", test::Mesh_types) {
+  TestType coarse, fine, bent;
+  shapecorr::make_creature(coarse, 2);
+  shapecorr::make_creature(fine, 3);
+  shapecorr::make_creature(bent, 3, 40.0);
+  const auto r = shapecorr::validate_mesh(fine);
+  CHECK(r.is_valid());
+  CHECK(r.is_closed());
+  CHECK(r.number_of_vertices == 642);
+  const auto pc = test::vertices_in_index_order(coarse), pf = test::vertices_in_index_order(fine), pb = test::vertices_in_index_order(bent);
+  auto point = [](const TestType& m, typename boost::graph_traits<TestType>::vertex_descriptor v) { return get(CGAL::vertex_point, m, v); };
+  // vertex i of level 2 is vertex i of level 3
+  double largest = 0;
+  for(std::size_t i = 0; i < pc.size(); ++i) largest = std::max(largest, std::sqrt(CGAL::to_double(CGAL::squared_distance(point(coarse, pc[i]), point(fine, pf[i])))));
+  CHECK(largest < 1e-12);
+  // the longest limb reaches 1 + 1.2 from the centre; the bend moves only points beyond 0.9 along it
+  double reach = 0;
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < pf.size(); ++i) {
+    const auto p = point(fine, pf[i]);
+    reach = std::max(reach, std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z())));
+    const double along = (CGAL::to_double(p.x()) * 1 + CGAL::to_double(p.y()) * 0.2 + CGAL::to_double(p.z()) * 0.1) / std::sqrt(1.05);
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, point(bent, pb[i]))));
+    if(d > 1e-12) {
+      ++moved;
+      CHECK(along > 0.9);
+    }
+  }
+  CHECK((reach > 2.0 && reach <= 2.2 + 1e-9)); // the tip of the longest limb, up to the sampling of the level
+  CHECK(moved > 10);
+  CHECK_THROWS_AS(shapecorr::make_creature(bent, 2, 200.0), shapecorr::Invalid_argument);
 }

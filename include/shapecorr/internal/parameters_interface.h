@@ -86,3 +86,4 @@ SHAPECORR_add_named_parameter(number_of_candidates_t, number_of_candidates, numb
 SHAPECORR_add_named_parameter(coarse_solver_t, coarse_solver, coarse_solver)
 SHAPECORR_add_named_parameter(maximum_nodes_t, maximum_nodes, maximum_nodes)
 SHAPECORR_add_named_parameter(local_optimization_iterations_t, local_optimization_iterations, local_optimization_iterations)
+SHAPECORR_add_named_parameter(number_of_starts_t, number_of_starts, number_of_starts)

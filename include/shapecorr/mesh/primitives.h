@@ -11,6 +11,9 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -31,17 +34,14 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& P, const std::vector
 }
 } // namespace internal
 
-/// \ingroup PkgShapeCorrMesh
-/// Subdivided icosahedron projected onto the sphere of radius `radius` centred at the origin:
-/// 10 * 4^s + 2 vertices after s subdivisions (s = 5: 10242). Vertex 0 is (0, r*sin, r*cos)-like
-/// pole of the icosahedron; vertex ids of the icosahedron (0..11) come first.
-template <typename TriangleMesh>
-void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
+namespace internal {
+// The unit icosphere's points and triangles (see make_icosphere).
+inline void icosphere_soup(int subdivisions, std::vector<std::array<double, 3>>& P, std::vector<std::array<std::size_t, 3>>& T) {
   if(subdivisions < 0 || subdivisions > 8) throw Invalid_argument("make_icosphere: subdivisions in [0, 8]");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<std::array<double, 3>> P = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+  P = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
                                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<std::array<std::size_t, 3>> T = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  T = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                                                {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
                                                {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
   auto normalize = [](std::array<double, 3>& p) {
@@ -71,7 +71,56 @@ void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
     }
     T.swap(T2);
   }
+}
+} // namespace internal
+
+/// \ingroup PkgShapeCorrMesh
+/// Subdivided icosahedron projected onto the sphere of radius `radius` centred at the origin:
+/// 10 * 4^s + 2 vertices after s subdivisions (s = 5: 10242). Vertex 0 is (0, r*sin, r*cos)-like
+/// pole of the icosahedron; vertex ids of the icosahedron (0..11) come first, and every
+/// subdivision keeps the ids of the level before.
+template <typename TriangleMesh>
+void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  internal::icosphere_soup(subdivisions, P, T);
   for(auto& p : P) for(double& c : p) c *= radius;
+  internal::soup_to_mesh(P, T, tm);
+}
+
+/// \ingroup PkgShapeCorrMesh
+/// A "creature": the unit icosphere of `subdivisions` with five protrusions ("limbs") of lengths
+/// 1.2, 1.0, 0.8, 0.6 and 0.4 in directions without symmetry, so that no isometry but the identity
+/// maps it to itself (like the animals of TOSCA, its extremities are where furthest point sampling
+/// goes first). `bend_degrees` bends the longest limb: each point turns about an axis across the
+/// limb's base by an angle rising smoothly from 0 (at 0.9 of the unit radius along the limb) to
+/// `bend_degrees` (at 1.5), a near-isometric deformation. The vertices are those of
+/// `make_icosphere`, so vertex i of the creature of level s is vertex i of the creature of level
+/// s + 1 (a finer triangulation of the same surface): ground truth for correspondence between a
+/// coarse and a finer, bent copy.
+/// \throws Invalid_argument when `bend_degrees` is not in [-180, 180]
+template <typename TriangleMesh>
+void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0) {
+  if(!std::isfinite(bend_degrees) || std::abs(bend_degrees) > 180) throw Invalid_argument("make_creature: bend_degrees in [-180, 180]");
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  internal::icosphere_soup(subdivisions, P, T);
+  // direction (need not be unit) and length of each limb, the longest first
+  const double limbs[5][4] = {{1, 0.2, 0.1, 1.2}, {-0.5, -0.6, 0.7, 1.0}, {-0.3, 1, 0.2, 0.8}, {0.1, -0.2, -1, 0.6}, {-0.8, 0.3, -0.4, 0.4}};
+  const Eigen::Vector3d along = Eigen::Vector3d(limbs[0][0], limbs[0][1], limbs[0][2]).normalized();
+  const Eigen::Vector3d across = along.cross(Eigen::Vector3d::UnitZ()).normalized();
+  for(auto& p : P) {
+    const Eigen::Vector3d d(p[0], p[1], p[2]);
+    double r = 1;
+    for(const auto& l : limbs) r += l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+    Eigen::Vector3d x = r * d;
+    const double t = std::clamp((x.dot(along) - 0.9) / 0.6, 0.0, 1.0), ramp = t * t * (3 - 2 * t);
+    if(ramp > 0) {
+      const Eigen::Vector3d base = 0.9 * along;
+      x = base + Eigen::AngleAxisd(ramp * bend_degrees * M_PI / 180, across) * (x - base);
+    }
+    p = {x.x(), x.y(), x.z()};
+  }
   internal::soup_to_mesh(P, T, tm);
 }
 

@@ -28,9 +28,11 @@ namespace shapecorr {
 /// A correspondence between source feature `source` and target feature `target` (positions in
 /// the feature lists of the two shapes).
 struct Feature_pair {
-  std::size_t source = 0;
-  std::size_t target = 0;
+  std::size_t source = 0; ///< position in the source feature list
+  std::size_t target = 0; ///< position in the target feature list
+  /// Same source and target.
   friend bool operator==(const Feature_pair& a, const Feature_pair& b) { return a.source == b.source && a.target == b.target; }
+  /// Lexicographic order on (source, target).
   friend bool operator<(const Feature_pair& a, const Feature_pair& b) { return a.source < b.source || (a.source == b.source && a.target < b.target); }
 };
 

@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -55,9 +56,9 @@ enum class Coarse_solver {
 /// A sparse correspondence between a source vertex and a target vertex (0-based indices of the
 /// vertex index maps), found at `level` (0: the coarse program, 1, 2, ...: refinement levels).
 struct Vertex_match {
-  std::size_t source = 0;
-  std::size_t target = 0;
-  std::size_t level = 0;
+  std::size_t source = 0; ///< source vertex index
+  std::size_t target = 0; ///< target vertex index
+  std::size_t level = 0;  ///< level that found it (0: the coarse program)
 };
 
 /// \ingroup PkgShapeCorrRegistration
@@ -85,6 +86,8 @@ struct Isometric_correspondence_report {
   std::vector<Isometric_level_record> levels; ///< one per level
   double descriptor_seconds = 0;              ///< trimming descriptors
   double dense_seconds = 0;                   ///< the dense map
+  std::size_t starts = 1;                     ///< first vertices tried by `run()`
+  unsigned chosen_seed = 0;                   ///< the seed of the start `run()` kept
 };
 
 /// \ingroup PkgShapeCorrRegistration
@@ -114,6 +117,25 @@ struct Isometric_correspondence_report {
 ///    map in k eigenfunctions, and back to a map by nearest neighbours in the spectral embedding,
 ///    k from 20 to `number_of_eigenpairs` (60) by 5; 0 disables it, e.g. for a part of a shape).
 ///
+///
+/// **Several starts** (beyond the thesis): `run()` does stages 1 to 4 from `number_of_starts` (3)
+/// first vertices (seeds `random_seed`, `random_seed` + 1, ...) and goes on with the coarse
+/// level of lowest energy E after local optimization. The furthest-point features depend on the
+/// first vertex where a shape has no clear extremities (a round body), and the program's optimum
+/// on features that do not correspond can be a wrong configuration; local optimization moves the
+/// features of a right configuration to where they correspond (E near 0 for an isometry) but
+/// cannot repair a wrong one. A heuristic: a low E is not a proof.
+///
+/// **Limitations** (measured on the generated creature, `make_creature`: a round body with five
+/// limbs). An exact isometric copy, renumbered, is matched from every start. With the longest limb
+/// bent by 40 degrees and the vertices renumbered, the coarse level kept a wrong configuration for
+/// each of seeds 0 to 3 (matches 30 edge lengths away); with the same numbering (the same first
+/// vertex on both shapes) 7 of 8 seeds were right with one start and 8 of 8 with three. Between a
+/// coarse and a finer triangulation of the same creature (642 and 2562 vertices) most starts
+/// failed: fast-marching distances on the coarse mesh are longer, and the distortion of the right
+/// configuration exceeds that of wrong ones. The method wants shapes with distinct extremities
+/// (which furthest point sampling finds in the same order on both) at similar resolutions.
+///
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, one connected component
 /// \tparam MipTraits a model of CGAL's `MixedIntegerProgramTraits` for `Coarse_solver::MIXED_INTEGER_PROGRAM`
 ///
@@ -132,6 +154,7 @@ struct Isometric_correspondence_report {
 /// | `local_optimization_iterations` | sweeps per side and level | `std::size_t` | 30 |
 /// | `number_of_eigenpairs` | largest spectral basis of the dense map; 0: geodesic coordinates only | `std::size_t` | 60 |
 /// | `random_seed` | seed of the first sampled vertex | `unsigned` | 0 |
+/// | `number_of_starts` | first vertices tried by `run()` (stages 1 to 4 each) | `std::size_t` | 3 |
 /// | `support_fraction`, `agd_radius_fraction`, ... | Geodesic Spin Contour parameters | | those of `Geodesic_spin_descriptors` |
 /// | `progress_callback` | `f(done, total)` after each stage of `run()` | `std::function<void(size_t, size_t)>` | none |
 ///
@@ -142,11 +165,16 @@ struct Isometric_correspondence_report {
 template <typename TriangleMesh, typename MipTraits = CGAL::GLPK_mixed_integer_program_traits<double>>
 class Isometric_correspondence {
 public:
+  /// The mesh's vertex type.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The mesh's face type.
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   /// A point on the target: a face and barycentric coordinates.
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
+  /// Validates both meshes and reads the parameters (`np1` carries the method's parameters and the
+  /// source's maps, `np2` the target's maps); no work is done until the stages are called.
+  /// \throws Invalid_input as described above
   template <typename NamedParameters1 = parameters::Default_named_parameters, typename NamedParameters2 = parameters::Default_named_parameters>
   Isometric_correspondence(const TriangleMesh& source, const TriangleMesh& target,
                            const NamedParameters1& np1 = CGAL::parameters::default_values(),
@@ -165,11 +193,13 @@ public:
     m_sweeps = choose_parameter(get_parameter(np1, internal_np::local_optimization_iterations), std::size_t(30));
     m_eigenpairs = choose_parameter(get_parameter(np1, internal_np::number_of_eigenpairs), std::size_t(60));
     m_seed = choose_parameter(get_parameter(np1, CGAL::internal_np::random_seed), 0u);
+    m_starts = choose_parameter(get_parameter(np1, internal_np::number_of_starts), std::size_t(3));
     m_progress = internal::progress_of(np1);
     if(m_features < 2) throw Invalid_argument("isometric correspondence: number_of_features must be at least 2");
     if(!(m_fraction > 0 && m_fraction <= 1)) throw Invalid_argument("isometric correspondence: match_fraction must be in (0, 1]");
     if(m_k == 0) throw Invalid_argument("isometric correspondence: number_of_candidates must be at least 1");
-    if(m_sweeps > 100000 || m_levels > 1000 || m_per_level > 100000)
+    if(m_starts == 0) throw Invalid_argument("isometric correspondence: number_of_starts must be at least 1");
+    if(m_sweeps > 100000 || m_levels > 1000 || m_per_level > 100000 || m_starts > 10000)
       throw Invalid_argument("isometric correspondence: an iteration count is out of range");
     if(static_cast<std::size_t>(std::floor(m_fraction * double(m_features))) == 0)
       throw Invalid_argument("isometric correspondence: match_fraction x number_of_features leaves no pair to match");
@@ -196,28 +226,53 @@ public:
 
   /// Every stage: features, trimming, the coarse program, local optimization, `number_of_levels`
   /// refinement levels and the dense map; `progress_callback(done, total)` after each.
+  /// Stages 1 to 4 run `number_of_starts` times (see above); the report's times include every start.
   const Isometric_correspondence_report& run() {
-    const std::size_t total = 5 + m_levels;
+    const std::size_t total = 4 * m_starts + 1 + m_levels;
     std::size_t done = 0;
     auto step = [&] { if(m_progress) m_progress(++done, total); };
-    sample_features(); step();
-    trim(); step();
-    solve_coarse(); step();
-    optimize_locally(); step();
+    unsigned best_seed = m_seed;
+    double best = std::numeric_limits<double>::infinity(), matching = 0, local = 0, descriptors = 0;
+    auto coarse_level = [&](unsigned seed, bool report) {
+      sample_features(seed); if(report) step();
+      trim(); if(report) step();
+      solve_coarse(); if(report) step();
+      optimize_locally(); if(report) step();
+      return m_report.levels[0].energies.back();
+    };
+    for(std::size_t s = 0; s < m_starts; ++s) {
+      const double e = coarse_level(m_seed + unsigned(s), true);
+      matching += m_report.levels[0].matching_seconds;
+      local += m_report.levels[0].local_seconds;
+      descriptors += m_report.descriptor_seconds;
+      if(e < best) {
+        best = e;
+        best_seed = m_seed + unsigned(s);
+      }
+    }
+    if(best_seed != m_seed + unsigned(m_starts - 1)) coarse_level(best_seed, false); // redo the best (cheaper than keeping every start's state)
+    m_report.levels[0].matching_seconds = matching;
+    m_report.levels[0].local_seconds = local;
+    m_report.descriptor_seconds = descriptors;
+    m_report.starts = m_starts;
     for(std::size_t l = 0; l < m_levels; ++l) { refine(); step(); }
     compute_dense_map(); step();
     return m_report;
   }
 
-  /// Stage 1: `number_of_features` furthest-point features per shape.
-  void sample_features() {
+  /// Stage 1: `number_of_features` furthest-point features per shape, from a first vertex drawn
+  /// with `seed` (default: `random_seed`).
+  void sample_features() { sample_features(m_seed); }
+  /// Stage 1 from the first vertex drawn with `seed`.
+  void sample_features(unsigned seed) {
     Timer t;
     m_source.clear();
     m_target.clear();
     m_matches.clear();
     m_report = Isometric_correspondence_report();
-    m_source.add_features(m_features, internal::seeded_start_vertex(m_seed, m_source.size()));
-    m_target.add_features(m_features, internal::seeded_start_vertex(m_seed, m_target.size()));
+    m_report.chosen_seed = seed;
+    m_source.add_features(m_features, internal::seeded_start_vertex(seed, m_source.size()));
+    m_target.add_features(m_features, internal::seeded_start_vertex(seed, m_target.size()));
     m_report.levels.push_back(Isometric_level_record());
     m_report.levels.back().source_features = m_features;
     m_report.levels.back().target_features = m_features;
@@ -585,6 +640,7 @@ private:
   Trim_descriptor m_trim = Trim_descriptor::GEODESIC_SPIN_CONTOUR;
   Coarse_solver m_solver = Coarse_solver::BRANCH_AND_BOUND;
   unsigned m_seed = 0;
+  std::size_t m_starts = 3;
   std::function<void(std::size_t, std::size_t)> m_progress;
   std::function<void(Side&, bool)> m_make_descriptors;
   std::function<Laplace_beltrami_eigenbasis(const Side&, bool, std::size_t)> m_make_basis;
