@@ -543,6 +543,9 @@ def mesh_jobs(bin_, path, work, base):
         ([bin_, "register", base, path, "--method", BASELINES[sum(name.encode()) % len(BASELINES)], "--iterations", "2", "--output", o + "_base.off",
           "--report", o + "_base.json"] + q, name, [o + "_base.off", o + "_base.json"], False),
         ([bin_, "distance", path, base, "--json"], name, [], True),
+        # near-isometric correspondence from the file to the base mesh (small: one start, one level)
+        ([bin_, "correspond", path, base, "--features", "4", "--levels", "1", "--per-level", "4", "--starts", "1", "--eigenpairs", "8",
+          "--output", o + "_corr.txt", "--report", o + "_corr.json"] + q, name, [o + "_corr.txt", o + "_corr.json"], False),
     ]
 
 
@@ -569,6 +572,8 @@ def parameter_jobs(bin_, base, flat, work):
         "register": (["register", base, flat, "--method", "nicps", "--output", o + ".ply"], ["--iterations"], ["--max-pair-distance"]),
         "register-cpd": (["register", base, flat, "--method", "cpd", "--output", o + ".ply"], ["--iterations"], []),
         "distance": (["distance", base, flat], [], []),
+        "correspond": (["correspond", base, base, "--levels", "0", "--eigenpairs", "0", "--starts", "1", "--output", o + ".txt"],
+                       ["--features", "--levels", "--per-level", "--starts", "--candidates", "--eigenpairs", "--seed"], []),
     }
     for name, (args, ints, reals) in per_command.items():
         for opt in ints:

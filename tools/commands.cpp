@@ -14,11 +14,12 @@ const Command& descriptors_command();
 const Command& match_command();
 const Command& register_command();
 const Command& distance_command();
+const Command& correspond_command();
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {info_command(),   generate_command(),    geodesics_command(), sample_command(),
                                              agd_command(),    descriptors_command(), match_command(),     register_command(),
-                                             distance_command()};
+                                             distance_command(), correspond_command()};
   return table;
 }
 

@@ -1,0 +1,207 @@
+// Copyright (c) 2026 ShapeCorr contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// shapecorr correspond: fully automatic near-isometric correspondence (thesis chapter 5) of SOURCE
+// and TARGET; the dense map, the sparse matches, a JSON report, coloured meshes and, with ground
+// truth, the geodesic error.
+#include "cli_common.h"
+
+#include <shapecorr/evaluation/descriptor_ranking.h>
+#include <shapecorr/registration/isometric_correspondence.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <functional>
+
+namespace cli {
+namespace {
+
+K::Point_3 point_of(const Mesh& m, std::size_t i) { return m.point(vertex_descriptor(static_cast<Mesh::size_type>(i))); }
+
+// The geodesic error of the map at the ground-truth pairs (source_ids[k] should go to
+// target_ids[k]) on the target, divided by the square root of the target's area (TOSCA's
+// normalization); pairs with an id out of range are rejected.
+struct Truth_error {
+  std::size_t pairs = 0;
+  double mean = 0, largest = 0, within_quarter = 0; // within_quarter: fraction of errors <= 0.25
+};
+
+// The ground-truth pairs must pair up and name vertices of the meshes.
+void check_truth(const Mesh& source, const Mesh& target, const std::vector<std::size_t>& source_ids, const std::vector<std::size_t>& target_ids) {
+  if(source_ids.size() != target_ids.size())
+    throw shapecorr::Invalid_argument("correspond: the two --truth files have " + std::to_string(source_ids.size()) + " and " +
+                                      std::to_string(target_ids.size()) + " ids (they must pair up)");
+  for(std::size_t k = 0; k < source_ids.size(); ++k)
+    if(source_ids[k] >= source.number_of_vertices() || target_ids[k] >= target.number_of_vertices())
+      throw shapecorr::Invalid_argument("correspond: --truth pair " + std::to_string(k + 1) + " names a vertex the mesh does not have");
+}
+
+Truth_error truth_error(const Mesh& target, const std::vector<std::size_t>& dense, const std::vector<std::size_t>& source_ids,
+                        const std::vector<std::size_t>& target_ids) {
+  const shapecorr::Fast_marching_geodesics<Mesh> engine(target);
+  const double scale = std::sqrt(CGAL::Polygon_mesh_processing::area(target));
+  Truth_error e;
+  e.pairs = source_ids.size();
+  std::map<std::size_t, Eigen::VectorXd> fields; // one field per distinct true target vertex
+  std::size_t close = 0;
+  for(std::size_t k = 0; k < source_ids.size(); ++k) {
+    auto it = fields.find(target_ids[k]);
+    if(it == fields.end()) it = fields.emplace(target_ids[k], engine.distances_from(target_ids[k])).first;
+    const double d = it->second[static_cast<Eigen::Index>(dense[source_ids[k]])] / scale;
+    e.mean += d / static_cast<double>(e.pairs);
+    e.largest = std::max(e.largest, d);
+    close += d <= 0.25 ? 1 : 0;
+  }
+  e.within_quarter = static_cast<double>(close) / static_cast<double>(e.pairs);
+  return e;
+}
+
+int run_correspond(const Args& a) {
+  const Mesh source = read_mesh(a, 0);
+  const Mesh target = read_mesh(a, 1);
+  const std::string output = a.require("output");
+  const std::string solver = a.get("solver", "bb"), trim = a.get("trim", "gsc");
+  if(solver != "bb" && solver != "mip") throw Usage_error("correspond: --solver must be bb (branch and bound) or mip (GLPK)");
+  if(trim != "gsc" && trim != "wks") throw Usage_error("correspond: --trim must be gsc or wks");
+  if(a.has("colors") && a.get("colors").empty()) throw Usage_error("correspond: --colors needs a file prefix");
+  namespace SP = shapecorr::parameters;
+  const bool show = verbose(a);
+  const std::function<void(std::size_t, std::size_t)> progress = [&](std::size_t done, std::size_t total) {
+    if(show) std::cerr << "correspond: stage " << done << "/" << total << "\n";
+  };
+  const auto np = SP::number_of_features(to_count(a.get("features", "10"), "--features", 2, 1000))
+                      .number_of_levels(to_count(a.get("levels", "3"), "--levels", 0, 1000))
+                      .features_per_level(to_count(a.get("per-level", "20"), "--per-level", 1, 100000))
+                      .number_of_starts(to_count(a.get("starts", "3"), "--starts", 1, 1000))
+                      .number_of_candidates(to_count(a.get("candidates", "3"), "--candidates", 1, 1000))
+                      .number_of_eigenpairs(to_count(a.get("eigenpairs", "60"), "--eigenpairs", 0, 1000))
+                      .random_seed(static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed", 0, max_seed)))
+                      .coarse_solver(solver == "bb" ? shapecorr::Coarse_solver::BRANCH_AND_BOUND : shapecorr::Coarse_solver::MIXED_INTEGER_PROGRAM)
+                      .trim_descriptor(trim == "gsc" ? shapecorr::Trim_descriptor::GEODESIC_SPIN_CONTOUR : shapecorr::Trim_descriptor::WAVE_KERNEL_SIGNATURE)
+                      .progress_callback(progress);
+  std::vector<std::size_t> truth_source, truth_target;
+  if(a.has("truth")) { // read before the work: a bad file fails at once
+    truth_source = shapecorr::read_vts(a.values("truth")[0]);
+    truth_target = shapecorr::read_vts(a.values("truth")[1]);
+    check_truth(source, target, truth_source, truth_target);
+  }
+  std::vector<std::size_t> mirror_source; // --symmetric: the mirror images of the truth's source vertices
+  if(a.has("symmetric")) {
+    if(!a.has("truth")) throw Usage_error("correspond: --symmetric needs --truth");
+    mirror_source = shapecorr::read_vts(a.get("symmetric"));
+    check_truth(source, target, mirror_source, truth_target);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  shapecorr::Isometric_correspondence<Mesh> method(source, target, np);
+  const shapecorr::Isometric_correspondence_report& report = method.run();
+  const double secs = seconds_since(t0);
+  const std::vector<std::size_t>& dense = method.dense_map();
+  {
+    std::ofstream out = open_output(output);
+    out << "# shapecorr correspond: line i (after the comments) is the target vertex (0-based) of source vertex i\n";
+    for(std::size_t t : dense) out << t << "\n";
+    if(!out) throw shapecorr::Output_error(output + ": write failed");
+  }
+  if(a.has("sparse")) {
+    std::ofstream out = open_output(a.get("sparse"));
+    out << "# source target level (0-based vertex ids; level 0: the coarse program)\n";
+    for(const auto& m : report.matches) out << m.source << " " << m.target << " " << m.level << "\n";
+  }
+  if(a.has("colors")) {
+    // the target coloured by the distance from the target vertex of the first match, and the
+    // source by the same values pulled back through the dense map: a right map gives the same
+    // picture on both; the matched features in red
+    const K::Point_3 origin = point_of(target, report.matches.front().target);
+    std::vector<double> on_target(target.number_of_vertices()), on_source(source.number_of_vertices());
+    for(std::size_t t = 0; t < on_target.size(); ++t) on_target[t] = std::sqrt(CGAL::squared_distance(point_of(target, t), origin));
+    for(std::size_t s = 0; s < on_source.size(); ++s) on_source[s] = on_target[dense[s]];
+    std::vector<std::size_t> hs, ht;
+    for(const auto& m : report.matches) hs.push_back(m.source), ht.push_back(m.target);
+    write_values(a.get("colors") + "_source.ply", source, on_source, hs);
+    write_values(a.get("colors") + "_target.ply", target, on_target, ht);
+  }
+  Truth_error te;
+  if(a.has("truth")) te = truth_error(target, dense, truth_source, truth_target);
+  Truth_error mirrored;
+  if(a.has("symmetric")) mirrored = truth_error(target, dense, mirror_source, truth_target);
+  if(a.has("report")) {
+    nlohmann::json j;
+    j["source"] = a.positional[0];
+    j["target"] = a.positional[1];
+    j["starts"] = report.starts;
+    j["chosen_seed"] = report.chosen_seed;
+    j["sparse_matches"] = report.matches.size();
+    nlohmann::json levels = nlohmann::json::array();
+    for(const auto& l : report.levels)
+      levels.push_back({{"level", l.level},
+                        {"source_features", l.source_features},
+                        {"target_features", l.target_features},
+                        {"candidates", l.candidates},
+                        {"new_matches", l.new_matches},
+                        {"objective", l.objective},
+                        {"optimal", l.optimal},
+                        {"nodes", l.nodes},
+                        {"energies", l.energies},
+                        {"matching_seconds", l.matching_seconds},
+                        {"local_seconds", l.local_seconds}});
+    j["levels"] = levels;
+    j["descriptor_seconds"] = report.descriptor_seconds;
+    j["dense_seconds"] = report.dense_seconds;
+    j["seconds"] = secs;
+    if(a.has("truth"))
+      j["truth"] = {{"pairs", te.pairs}, {"mean_error", te.mean}, {"largest_error", te.largest}, {"fraction_within_0.25", te.within_quarter}};
+    if(a.has("symmetric"))
+      j["truth_symmetric"] = {{"pairs", mirrored.pairs}, {"mean_error", mirrored.mean}, {"largest_error", mirrored.largest},
+                              {"fraction_within_0.25", mirrored.within_quarter}};
+    std::ofstream out = open_output(a.get("report"));
+    out << j.dump(2) << "\n";
+  }
+  if(show) {
+    std::cerr << "correspond: " << report.matches.size() << " sparse matches over " << report.levels.size() << " levels (start " << report.chosen_seed
+              << " of " << report.starts << " tried), dense map of " << dense.size() << " vertices";
+    if(a.has("truth"))
+      std::cerr << "; geodesic error / sqrt(area) over " << te.pairs << " pairs: mean " << te.mean << ", largest " << te.largest << ", "
+                << 100 * te.within_quarter << " % within 0.25";
+    if(a.has("symmetric"))
+      std::cerr << "; against the mirrored truth: mean " << mirrored.mean << ", largest " << mirrored.largest << ", " << 100 * mirrored.within_quarter
+                << " % within 0.25 (the map is " << (mirrored.mean < te.mean ? "the mirrored one" : "the direct one") << ")";
+    std::cerr << "; " << secs << " s -> " << output << "\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+const Command& correspond_command() {
+  static const Command c{
+      "correspond",
+      "correspond SOURCE TARGET --output MAP.txt [--features N] [--levels L] [--sparse FILE] [--colors PREFIX] [--truth S.vts T.vts [--symmetric S.sym.vts]] [--report FILE.json]",
+      "Fully automatic correspondence of two near-isometric shapes (thesis chapter 5): furthest-point features, "
+      "candidate pairs by Geodesic Spin Contour (or WKS), the coarse program that keeps geodesic distances (branch and "
+      "bound, or GLPK), local optimization, refinement levels, then a dense map. SOURCE and TARGET must be one connected "
+      "component each. Writes MAP.txt: after '#' comments, line i is the target vertex (0-based) of source vertex i. "
+      "With --truth (TOSCA .vts files of SOURCE and TARGET, 1-based, paired by line), prints the geodesic error on TARGET "
+      "divided by sqrt(area) (with --symmetric also against the mirrored truth: a symmetric shape has two right maps). "
+      "Progress on stderr.",
+      with_mesh_reading_options({{"output", "MAP.txt", "the dense map, one target vertex per source vertex"},
+                                 {"features", "N", "coarse features per shape (default 10)"},
+                                 {"levels", "L", "refinement levels (default 3)"},
+                                 {"per-level", "N", "new features per shape and level (default 20)"},
+                                 {"starts", "S", "first vertices tried for the coarse level; the lowest energy is kept (default 3)"},
+                                 {"candidates", "K", "candidate targets per feature, widened until the program is feasible (default 3)"},
+                                 {"solver", "bb|mip", "the coarse program's solver: branch and bound (default) or GLPK"},
+                                 {"trim", "gsc|wks", "descriptor of the candidate pairs (default gsc)"},
+                                 {"eigenpairs", "K", "largest spectral basis of the dense map's upsampling; 0: geodesic coordinates only (default 60)"},
+                                 {"seed", "S", "seed of the first sampled vertex (default 0)"},
+                                 {"sparse", "FILE", "the sparse matches: 'source target level' per line"},
+                                 {"colors", "PREFIX", "PREFIX_target.ply coloured by the distance from a matched feature, PREFIX_source.ply by the same values through the map (matched features red)"},
+                                 {"truth", "S.vts T.vts", "ground-truth vertex lists of SOURCE and TARGET (1-based, paired by line): report the geodesic error"},
+                                 {"symmetric", "S.sym.vts", "with --truth: the mirror image of each truth source vertex (TOSCA .sym.vts): also the error against the mirrored truth"},
+                                 {"report", "FILE.json", "levels (features, candidates, objective, energies, times), starts, the truth error"}}),
+      2, 2, run_correspond};
+  return c;
+}
+
+} // namespace cli
