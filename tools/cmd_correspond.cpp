@@ -66,6 +66,8 @@ int run_correspond(const Args& a) {
   if(solver != "bb" && solver != "mip") throw Usage_error("correspond: --solver must be bb (branch and bound) or mip (GLPK)");
   if(trim != "gsc" && trim != "wks") throw Usage_error("correspond: --trim must be gsc or wks");
   if(a.has("colors") && a.get("colors").empty()) throw Usage_error("correspond: --colors needs a file prefix");
+  if(a.has("lines") && extension(a.get("lines")) != "obj" && extension(a.get("lines")) != "ply")
+    throw Usage_error("correspond: --lines must end in .obj or .ply");
   namespace SP = shapecorr::parameters;
   const bool show = verbose(a);
   const std::function<void(std::size_t, std::size_t)> progress = [&](std::size_t done, std::size_t total) {
@@ -108,6 +110,11 @@ int run_correspond(const Args& a) {
     std::ofstream out = open_output(a.get("sparse"));
     out << "# source target level (0-based vertex ids; level 0: the coarse program)\n";
     for(const auto& m : report.matches) out << m.source << " " << m.target << " " << m.level << "\n";
+  }
+  if(a.has("lines")) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for(const auto& m : report.matches) pairs.emplace_back(m.source, m.target);
+    shapecorr::write_correspondences(a.get("lines"), source, target, pairs);
   }
   if(a.has("colors")) {
     // the target coloured by the distance from the target vertex of the first match, and the
@@ -177,7 +184,7 @@ int run_correspond(const Args& a) {
 const Command& correspond_command() {
   static const Command c{
       "correspond",
-      "correspond SOURCE TARGET --output MAP.txt [--features N] [--levels L] [--sparse FILE] [--colors PREFIX] [--truth S.vts T.vts [--symmetric S.sym.vts]] [--report FILE.json]",
+      "correspond SOURCE TARGET --output MAP.txt [--features N] [--levels L] [--sparse FILE] [--lines FILE] [--colors PREFIX] [--truth S.vts T.vts [--symmetric S.sym.vts]] [--report FILE.json]",
       "Fully automatic correspondence of two near-isometric shapes (thesis chapter 5): furthest-point features, "
       "candidate pairs by Geodesic Spin Contour (or WKS), the coarse program that keeps geodesic distances (branch and "
       "bound, or GLPK), local optimization, refinement levels, then a dense map. SOURCE and TARGET must be one connected "
@@ -196,6 +203,7 @@ const Command& correspond_command() {
                                  {"eigenpairs", "K", "largest spectral basis of the dense map's upsampling; 0: geodesic coordinates only (default 60)"},
                                  {"seed", "S", "seed of the first sampled vertex (default 0)"},
                                  {"sparse", "FILE", "the sparse matches: 'source target level' per line"},
+                                 {"lines", "FILE.obj|.ply", "both shapes side by side with a line per sparse match (MeshLab)"},
                                  {"colors", "PREFIX", "PREFIX_target.ply coloured by the distance from a matched feature, PREFIX_source.ply by the same values through the map (matched features red)"},
                                  {"truth", "S.vts T.vts", "ground-truth vertex lists of SOURCE and TARGET (1-based, paired by line): report the geodesic error"},
                                  {"symmetric", "S.sym.vts", "with --truth: the mirror image of each truth source vertex (TOSCA .sym.vts): also the error against the mirrored truth"},
