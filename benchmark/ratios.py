@@ -157,3 +157,15 @@ if nv:
 ra = runs.get("BM_RigidAlignment_Vertebra/iterations:3/real_time")
 if ra:
     print(f"rigid ICP (no initialization), same meshes: {ms(ra):.0f} ms")
+# Automatic correspondence (bench_isometric): the coarse program's two solvers, the pipeline
+# against all-pairs geodesics of both shapes.
+bb = runs.get("BM_CoarseProgram_BranchAndBound/real_time")
+gl = runs.get("BM_Reference_CoarseProgram_Glpk/real_time")
+if bb and gl:
+    print(f"coarse program ({bb['features']:.0f} features, {bb['candidates']:.0f} candidate pairs): branch and bound {ms(bb):.3f} ms "
+          f"({bb['nodes']:.0f} nodes, optimal {bb['optimal']:.0f}), GLPK {ms(gl):.1f} ms (optimal {gl['optimal']:.0f}) -> {ms(gl)/ms(bb):.0f}x; "
+          f"objectives {bb['objective']:.6g} / {gl['objective']:.6g}")
+pl = runs.get("BM_Pipeline/iterations:1/real_time")
+ap = runs.get("BM_Reference_AllPairsGeodesics_BothShapes/iterations:1/real_time")
+if pl and ap:
+    print(f"pipeline: {ms(pl)/1e3:.2f} s; all-pairs geodesics of both shapes: {ms(ap)/1e3:.2f} s -> ratio {ms(pl)/ms(ap):.2f}")
