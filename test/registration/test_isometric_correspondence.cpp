@@ -8,6 +8,7 @@
 // Isometric_correspondence's documentation.)
 #include "test_meshes.h"
 
+#include <shapecorr/mesh.h>
 #include <shapecorr/mesh/primitives.h>
 #include <shapecorr/registration/isometric_correspondence.h>
 
@@ -119,6 +120,30 @@ double mean_edge(const Soup& s) {
       sum += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
     }
   return sum / double(3 * s.triangles.size());
+}
+
+// The soup without the triangles that have a vertex beyond `height` along `dir` (a limb cut off:
+// a boundary), its vertices renumbered in order of first use.
+Soup cut_off(const Soup& s, std::array<double, 3> dir, double height) {
+  const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  std::vector<std::size_t> new_of_old(s.points.size(), s.points.size());
+  Soup out;
+  for(const auto& t : s.triangles) {
+    bool beyond = false;
+    for(std::size_t v : t) beyond = beyond || (s.points[v][0] * dir[0] + s.points[v][1] * dir[1] + s.points[v][2] * dir[2]) / n > height;
+    if(beyond) continue;
+    std::array<std::size_t, 3> nt;
+    for(std::size_t c = 0; c < 3; ++c) {
+      std::size_t& id = new_of_old[t[c]];
+      if(id == s.points.size()) {
+        id = out.points.size();
+        out.points.push_back(s.points[t[c]]);
+      }
+      nt[c] = id;
+    }
+    out.triangles.push_back(nt);
+  }
+  return out;
 }
 
 } // namespace
@@ -281,4 +306,24 @@ TEST_CASE("isometric correspondence: bad input", "[isometric]") {
   shapecorr::Isometric_correspondence<Mesh> method(sphere, sphere);
   CHECK_THROWS_AS(method.solve_coarse(), shapecorr::Invalid_argument);
   CHECK_THROWS_AS(method.compute_dense_map(), shapecorr::Invalid_argument);
+}
+
+TEST_CASE("isometric correspondence: a partial shape (a limb cut off, a boundary) is accepted", "[isometric]") {
+  // Documented behaviour, not accuracy: shapes with boundaries run through every stage and give a
+  // valid map. (On this creature the matches of a cut shape are wrong: see the limitations.)
+  typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
+  const Soup a = creature();
+  const Soup cut = cut_off(a, {-0.5, -0.6, 0.7}, 1.6);
+  REQUIRE(cut.points.size() < a.points.size());
+  const Mesh whole = mesh_of<Mesh>(a), part = mesh_of<Mesh>(cut);
+  REQUIRE(shapecorr::validate_mesh(part).boundary_edges > 0);
+  for(int direction = 0; direction < 2; ++direction) {
+    const Mesh& source = direction == 0 ? part : whole;
+    const Mesh& target = direction == 0 ? whole : part;
+    shapecorr::Isometric_correspondence<Mesh> method(source, target, SP::number_of_levels(1));
+    const auto& report = method.run();
+    CHECK(report.matches.size() == 8 + 16);
+    REQUIRE(method.dense_map().size() == num_vertices(source));
+    for(std::size_t t : method.dense_map()) CHECK(t < num_vertices(target));
+  }
 }

@@ -136,7 +136,8 @@ struct Isometric_correspondence_report {
 /// vertex on both shapes) 7 of 8 seeds were right with one start and 8 of 8 with three. Between a
 /// coarse and a finer triangulation of the same creature (642 and 2562 vertices) most starts
 /// failed: fast-marching distances on the coarse mesh are longer, and the distortion of the right
-/// configuration exceeds that of wrong ones. The method wants shapes with distinct extremities
+/// configuration exceeds that of wrong ones. Shapes with boundaries are accepted, but the creature
+/// with one limb tip cut off, onto the whole renumbered creature, failed for seeds 0 to 3. The method wants shapes with distinct extremities
 /// (which furthest point sampling finds in the same order on both) at similar resolutions.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, one connected component
