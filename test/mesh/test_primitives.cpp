@@ -60,4 +60,14 @@ TEMPLATE_LIST_TEST_CASE("the creature: an icosphere with five limbs; levels shar
   CHECK((reach > 2.0 && reach <= 2.2 + 1e-9)); // the tip of the longest limb, up to the sampling of the level
   CHECK(moved > 10);
   CHECK_THROWS_AS(shapecorr::make_creature(bent, 2, 200.0), shapecorr::Invalid_argument);
+  CHECK_THROWS_AS(shapecorr::make_creature(bent, 2, 0.0, -1.0), shapecorr::Invalid_argument);
+  // limb_scale 2.5: the longest limb reaches 1 + 2.5 x 1.2
+  TestType longer;
+  shapecorr::make_creature(longer, 3, 0.0, 2.5);
+  double longest = 0;
+  for(auto v : vertices(longer)) {
+    const auto p = point(longer, v);
+    longest = std::max(longest, std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z())));
+  }
+  CHECK((longest > 3.5 && longest <= 4.0 + 1e-9));
 }

@@ -97,11 +97,14 @@ void make_icosphere(TriangleMesh& tm, int subdivisions, double radius = 1.0) {
 /// `bend_degrees` (at 1.5), a near-isometric deformation. The vertices are those of
 /// `make_icosphere`, so vertex i of the creature of level s is vertex i of the creature of level
 /// s + 1 (a finer triangulation of the same surface): ground truth for correspondence between a
-/// coarse and a finer, bent copy.
-/// \throws Invalid_argument when `bend_degrees` is not in [-180, 180]
+/// coarse and a finer, bent copy. `limb_scale` multiplies the limbs' lengths: at 1 the limbs are
+/// short against the body (the farthest vertex from a tip is on the body), at 2.5 they are the
+/// shape's extremities, as the legs and tails of TOSCA's animals.
+/// \throws Invalid_argument when `bend_degrees` is not in [-180, 180] or `limb_scale` not in [0, 10]
 template <typename TriangleMesh>
-void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0) {
+void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0, double limb_scale = 1) {
   if(!std::isfinite(bend_degrees) || std::abs(bend_degrees) > 180) throw Invalid_argument("make_creature: bend_degrees in [-180, 180]");
+  if(!(limb_scale >= 0 && limb_scale <= 10)) throw Invalid_argument("make_creature: limb_scale in [0, 10]");
   std::vector<std::array<double, 3>> P;
   std::vector<std::array<std::size_t, 3>> T;
   internal::icosphere_soup(subdivisions, P, T);
@@ -112,7 +115,7 @@ void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0) 
   for(auto& p : P) {
     const Eigen::Vector3d d(p[0], p[1], p[2]);
     double r = 1;
-    for(const auto& l : limbs) r += l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+    for(const auto& l : limbs) r += limb_scale * l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
     Eigen::Vector3d x = r * d;
     const double t = std::clamp((x.dot(along) - 0.9) / 0.6, 0.0, 1.0), ramp = t * t * (3 - 2 * t);
     if(ramp > 0) {
