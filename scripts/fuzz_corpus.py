@@ -560,6 +560,7 @@ def parameter_jobs(bin_, base, flat, work):
     bad_reals = ["nan", "inf", "-1", "1e999", "", "x", "1,5", "0"]
     per_command = {
         "generate": (["generate", "sphere", "--output", o + ".off"], ["--subdivisions"], []),
+        "generate-creature": (["generate", "creature", "--subdivisions", "1", "--output", o + ".off"], [], ["--bend", "--limb-scale"]),
         "geodesics": (["geodesics", base, "--source", "0", "--output", o + ".csv"], [], []),
         "sample": (["sample", base, "--count", "3"], ["--count", "--seed"], []),
         "agd": (["agd", base, "--output", o + ".csv"], ["--sources"], ["--radius"]),
