@@ -217,7 +217,7 @@ public:
       if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) {
         if(is_source) side.contours = contours_of(side, np1);
         else side.contours = contours_of(side, np2);
-      } else {
+      } else if(side.wks.rows() == 0) { // the signatures of all vertices: once (they do not depend on the features)
         const Laplace_beltrami_eigenbasis basis = is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np1)
                                                             : compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np2);
         side.wks = wave_kernel_signature_matrix(basis);
@@ -235,26 +235,22 @@ public:
     const std::size_t total = 4 * m_starts + 1 + m_levels;
     std::size_t done = 0;
     auto step = [&] { if(m_progress) m_progress(++done, total); };
-    unsigned best_seed = m_seed;
-    double best = std::numeric_limits<double>::infinity(), matching = 0, local = 0, descriptors = 0;
-    auto coarse_level = [&](unsigned seed, bool report) {
-      sample_features(seed); if(report) step();
-      trim(); if(report) step();
-      solve_coarse(); if(report) step();
-      optimize_locally(); if(report) step();
-      return m_report.levels[0].energies.back();
-    };
+    Coarse_state best;
+    double best_energy = std::numeric_limits<double>::infinity(), matching = 0, local = 0, descriptors = 0;
     for(std::size_t s = 0; s < m_starts; ++s) {
-      const double e = coarse_level(m_seed + unsigned(s), true);
+      sample_features(m_seed + unsigned(s)); step();
+      trim(); step();
+      solve_coarse(); step();
+      optimize_locally(); step();
       matching += m_report.levels[0].matching_seconds;
       local += m_report.levels[0].local_seconds;
       descriptors += m_report.descriptor_seconds;
-      if(e < best) {
-        best = e;
-        best_seed = m_seed + unsigned(s);
+      if(m_report.levels[0].energies.back() < best_energy) {
+        best_energy = m_report.levels[0].energies.back();
+        best = save_coarse();
       }
     }
-    if(best_seed != m_seed + unsigned(m_starts - 1)) coarse_level(best_seed, false); // redo the best (cheaper than keeping every start's state)
+    restore_coarse(std::move(best));
     m_report.levels[0].matching_seconds = matching;
     m_report.levels[0].local_seconds = local;
     m_report.descriptor_seconds = descriptors;
@@ -452,6 +448,15 @@ private:
   struct Match {
     std::size_t source, target, level; // positions in the feature lists
   };
+  // What stages 1 to 4 leave behind: run() keeps the best start's (the engines stay).
+  struct Coarse_state {
+    std::vector<std::size_t> source_features, target_features;
+    std::vector<Eigen::VectorXd> source_fields, target_fields;
+    std::vector<Spin_contour> source_contours, target_contours;
+    std::vector<Match> matches;
+    Coarse_matching_problem problem;
+    Isometric_correspondence_report report;
+  };
   struct Timer {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
     double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
@@ -527,6 +532,22 @@ private:
   static auto without_progress(const NamedParameters& np) {
     typedef std::function<void(std::size_t, std::size_t)> Progress;
     return shapecorr::Named_function_parameters<Progress, internal_np::progress_callback_t, NamedParameters>(Progress(), np);
+  }
+
+  Coarse_state save_coarse() const {
+    return {m_source.features, m_target.features, m_source.fields, m_target.fields, m_source.contours, m_target.contours,
+            m_matches,         m_problem,         m_report};
+  }
+  void restore_coarse(Coarse_state c) {
+    m_source.features = std::move(c.source_features);
+    m_target.features = std::move(c.target_features);
+    m_source.fields = std::move(c.source_fields);
+    m_target.fields = std::move(c.target_fields);
+    m_source.contours = std::move(c.source_contours);
+    m_target.contours = std::move(c.target_contours);
+    m_matches = std::move(c.matches);
+    m_problem = std::move(c.problem);
+    m_report = std::move(c.report);
   }
 
   static void require(bool ok, const char* what) {
