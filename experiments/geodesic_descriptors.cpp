@@ -1,8 +1,9 @@
 // Copyright (c) 2026 ShapeCorr contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The thesis's chapter 4 evaluation (ALGORITHMS.md): hit rate and average geodesic error against
-// 100 k / N for the Geodesic Spin Contour, the geodesic spin image, HKS, WKS, SI-HKS and the spin
-// image, on TOSCA (tosca5k) same-class pairs, whole and with partial / resampled sources made here
+// 100 k / N for the Geodesic Spin Contour, the geodesic spin image, HKS, WKS, SI-HKS, the intrinsic
+// shape context and the spin image, on TOSCA (tosca5k) same-class pairs, whole and with partial /
+// resampled sources made here
 // (a cut extremity, random deletion of 20/40/60 vertices, one Loop subdivision), ground truth from
 // the .vts files carried through the kept vertex ids. Writes CSV curves, PNG plots and a JSON
 // summary (hit rate at k = 1 and at 1%, mean geodesic error at k = 1, normalized by sqrt(area)).
@@ -11,7 +12,7 @@
 // maps/3_to_1) and the non-isometric lion:cat (lion2cat). TOSCA pairs also get the curves that
 // count the left-right symmetric match as correct (.sym.vts).
 // usage: evaluate_geodesic_descriptors [--data DIR] [--output DIR] [--pairs a:b,c:d] [--variants
-//        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,si]
+//        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,isc,si]
 //        [--points 50] [--seed 1] [--threads T] [--support L/D] [--agd-radius r/D]
 #include "program.h"
 #include "plot.h"
@@ -155,6 +156,7 @@ struct Case {
   std::vector<std::size_t> truth;  // target vertex per point
   std::vector<std::size_t> truth_sym; // its left-right counterpart (TOSCA .sym.vts), or empty
   double support = 0.2, radius = 0.15;
+  double isc_radius = 0; // ISC radius, mesh units; 0: 0.055 x the target's geodesic diameter
 };
 
 double sqrt_area(const Mesh& m) { return std::sqrt(CGAL::Polygon_mesh_processing::area(m)); }
@@ -238,6 +240,16 @@ std::vector<Descriptor_result> run_case(const Case& c, const std::vector<std::st
       r.curves = rank([&](std::size_t i, std::size_t j) {
         return (P.row(static_cast<Eigen::Index>(c.points[i])) - T.row(static_cast<Eigen::Index>(j))).norm();
       });
+    } else if(d == "isc") {
+      // the thesis's ISC: SI-HKS (its defaults, the spectral descriptors' 300-eigenpair bases),
+      // radius 20 on TOSCA, 5 rings x 16 directions; the source described with the target's radius
+      spectral();
+      r.label = "ISC";
+      const double R = c.isc_radius > 0 ? c.isc_radius : 0.055 * shapecorr::geodesic_diameter(c.target, SP::geodesic_method(shapecorr::Geodesic_method::FAST_MARCHING));
+      const shapecorr::Intrinsic_shape_context<Mesh> it(c.target, SP::eigenbasis(basis_target.get()).support_length(R).number_of_threads(threads));
+      const shapecorr::Intrinsic_shape_context<Mesh> is(c.source.mesh, SP::eigenbasis(basis_source.get()).support_length(R).number_of_threads(threads));
+      const Eigen::MatrixXd T = it.descriptors(all), P = is.descriptors(c.points);
+      r.curves = rank([&](std::size_t i, std::size_t j) { return (P.row(long(i)) - T.row(long(j))).norm(); });
     } else if(d == "si") {
       r.label = "SPIN IMAGE";
       // the thesis's baseline: support 0.2 x the target's bounding-box diagonal, vertex normals
@@ -313,13 +325,13 @@ std::string upper(std::string s) {
 int main(int argc, char** argv) {
   std::string data = SHAPECORR_EVAL_DATA_DIR, out = "experiments/results/geodesic";
   std::string pairs = "wolf0:wolf2,centaur0:centaur1,cat0:cat1,dog0:dog1,camel3:camel1,lion:cat";
-  std::string variants = "whole,cut,delete20,delete40,delete60,loop", descriptors = "gsc,gsi,hks,wks,sihks,si";
+  std::string variants = "whole,cut,delete20,delete40,delete60,loop", descriptors = "gsc,gsi,hks,wks,sihks,isc,si";
   std::size_t n_points = 50;
   unsigned seed = 1, threads = 0;
   double support_override = 0, radius_override = -1;
   const int code = eval::parse_options(argc, argv, "evaluate_geodesic_descriptors",
       "[--data DIR] [--output DIR] [--pairs a:b,...] [--variants whole,cut,delete20,...]\n"
-      "       [--descriptors gsc,gsi,hks,wks,sihks,si] [--points N] [--seed S] [--threads T] [--support F] [--agd-radius F]",
+      "       [--descriptors gsc,gsi,hks,wks,sihks,isc,si] [--points N] [--seed S] [--threads T] [--support F] [--agd-radius F]",
       [&](const std::string& k, const std::string& v) {
         if(k == "--data") data = v;
         else if(k == "--output") out = v;
@@ -372,12 +384,14 @@ int main(int argc, char** argv) {
         }
       }
       const bool wolf = ab[0].rfind("wolf", 0) == 0;
+      const bool camel_or_lion = sym_of.empty();
       for(const std::string& variant : split(variants, ',')) {
         Case c;
         c.name = ab[0] + "-" + ab[1] + "-" + variant;
         c.target = B;
         c.support = wolf ? 0.4 : 0.2; // the thesis: wolf L = 0.4 D, r = 0.15 D; centaur (and here the others) L = 0.2 D
         c.radius = 0.15;
+        if(!camel_or_lion) c.isc_radius = 20; // the thesis's ISC radius on TOSCA
         if(support_override > 0) c.support = support_override;
         if(radius_override >= 0) c.radius = radius_override;
         if(variant == "whole") c.source = whole(A);

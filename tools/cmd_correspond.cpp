@@ -6,9 +6,9 @@
 #include "cli_common.h"
 
 #include <shapecorr/evaluation/descriptor_ranking.h>
+#include <shapecorr/evaluation/map_geodesic_error.h>
 #include <shapecorr/registration/isometric_correspondence.h>
 
-#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <nlohmann/json.hpp>
 
@@ -20,16 +20,9 @@ namespace {
 
 K::Point_3 point_of(const Mesh& m, std::size_t i) { return m.point(vertex_descriptor(static_cast<Mesh::size_type>(i))); }
 
-// The geodesic error of the map at ground-truth pairs, on the target, divided by the square root of
-// the target's area (TOSCA's normalization).
-struct Truth_error {
-  std::size_t pairs = 0;
-  double mean = 0, largest = 0, within_quarter = 0; // within_quarter: fraction of errors <= 0.25
-
-  nlohmann::json to_json() const {
-    return {{"pairs", pairs}, {"mean_error", mean}, {"largest_error", largest}, {"fraction_within_0.25", within_quarter}};
-  }
-};
+nlohmann::json to_json(const shapecorr::Map_error_summary& e) {
+  return {{"pairs", e.pairs}, {"mean_error", e.mean}, {"largest_error", e.largest}, {"fraction_within_0.25", e.fraction_within}};
+}
 
 // The ground-truth pairs must pair up and name vertices of the meshes.
 void check_truth(const Mesh& source, const Mesh& target, const std::vector<std::size_t>& source_ids, const std::vector<std::size_t>& target_ids) {
@@ -41,42 +34,13 @@ void check_truth(const Mesh& source, const Mesh& target, const std::vector<std::
       throw shapecorr::Invalid_argument("correspond: --truth pair " + std::to_string(k + 1) + " names a vertex the mesh does not have");
 }
 
-// The errors of `dense` against each list of source ids in `truths` (source id k should go to
-// target_ids[k]: the truth, and with --symmetric its mirror). One fast marching per distinct true
-// target vertex serves every list; the fields are not kept (5000 of them would take 200 MB).
-std::vector<Truth_error> truth_errors(const Mesh& target, const std::vector<std::size_t>& dense, const std::vector<std::size_t>& target_ids,
-                                      const std::vector<const std::vector<std::size_t>*>& truths) {
-  const shapecorr::Fast_marching_geodesics<Mesh> engine(target);
-  const double scale = std::sqrt(CGAL::Polygon_mesh_processing::area(target));
-  std::map<std::size_t, std::vector<std::size_t>> pairs_of; // true target vertex -> the pairs k that name it
-  for(std::size_t k = 0; k < target_ids.size(); ++k) pairs_of[target_ids[k]].push_back(k);
-  std::vector<Truth_error> errors(truths.size());
-  std::vector<std::size_t> close(truths.size(), 0);
-  for(const auto& [t, ks] : pairs_of) {
-    const Eigen::VectorXd field = engine.distances_from(t);
-    for(std::size_t list = 0; list < truths.size(); ++list)
-      for(std::size_t k : ks) {
-        const double d = field[static_cast<Eigen::Index>(dense[(*truths[list])[k]])] / scale;
-        errors[list].mean += d;
-        errors[list].largest = std::max(errors[list].largest, d);
-        close[list] += d <= 0.25 ? 1 : 0;
-      }
-  }
-  for(std::size_t list = 0; list < truths.size(); ++list) {
-    errors[list].pairs = target_ids.size();
-    errors[list].mean /= static_cast<double>(target_ids.size());
-    errors[list].within_quarter = static_cast<double>(close[list]) / static_cast<double>(target_ids.size());
-  }
-  return errors;
-}
-
 int run_correspond(const Args& a) {
   const Mesh source = read_mesh(a, 0);
   const Mesh target = read_mesh(a, 1);
   const std::string output = a.require("output");
   const std::string solver = a.get("solver", "bb"), trim = a.get("trim", "gsc");
   if(solver != "bb" && solver != "mip") throw Usage_error("correspond: --solver must be bb (branch and bound) or mip (GLPK)");
-  if(trim != "gsc" && trim != "wks") throw Usage_error("correspond: --trim must be gsc or wks");
+  if(trim != "gsc" && trim != "wks" && trim != "isc") throw Usage_error("correspond: --trim must be gsc, wks or isc");
   if(a.has("colors") && a.get("colors").empty()) throw Usage_error("correspond: --colors needs a file prefix");
   if(a.has("lines") && extension(a.get("lines")) != "obj" && extension(a.get("lines")) != "ply")
     throw Usage_error("correspond: --lines must end in .obj or .ply");
@@ -93,7 +57,9 @@ int run_correspond(const Args& a) {
                       .number_of_eigenpairs(to_count(a.get("eigenpairs", "60"), "--eigenpairs", 0, 1000))
                       .random_seed(static_cast<unsigned>(to_count(a.get("seed", "0"), "--seed", 0, max_seed)))
                       .coarse_solver(solver == "bb" ? shapecorr::Coarse_solver::BRANCH_AND_BOUND : shapecorr::Coarse_solver::MIXED_INTEGER_PROGRAM)
-                      .trim_descriptor(trim == "gsc" ? shapecorr::Trim_descriptor::GEODESIC_SPIN_CONTOUR : shapecorr::Trim_descriptor::WAVE_KERNEL_SIGNATURE)
+                      .trim_descriptor(trim == "gsc"   ? shapecorr::Trim_descriptor::GEODESIC_SPIN_CONTOUR
+                                       : trim == "wks" ? shapecorr::Trim_descriptor::WAVE_KERNEL_SIGNATURE
+                                                       : shapecorr::Trim_descriptor::INTRINSIC_SHAPE_CONTEXT)
                       .progress_callback(progress);
   std::vector<std::size_t> truth_source, truth_target;
   if(a.has("truth")) { // read before the work: a bad file fails at once
@@ -141,12 +107,18 @@ int run_correspond(const Args& a) {
     write_values(a.get("colors") + "_source.ply", source, on_source, hs);
     write_values(a.get("colors") + "_target.ply", target, on_target, ht);
   }
-  Truth_error te, mirrored;
+  // the geodesic error at the truth's pairs, divided by sqrt(area); with --symmetric also of the
+  // mirror images of the truth's source points (the flipped map)
+  shapecorr::Map_error_summary te, mirrored;
   if(a.has("truth")) {
-    const std::vector<Truth_error> e = a.has("symmetric") ? truth_errors(target, dense, truth_target, {&truth_source, &mirror_source})
-                                                          : truth_errors(target, dense, truth_target, {&truth_source});
-    te = e[0];
-    if(a.has("symmetric")) mirrored = e[1];
+    std::vector<std::vector<std::size_t>> found(a.has("symmetric") ? 2 : 1);
+    for(std::size_t k = 0; k < truth_source.size(); ++k) {
+      found[0].push_back(dense[truth_source[k]]);
+      if(a.has("symmetric")) found[1].push_back(dense[mirror_source[k]]);
+    }
+    const auto e = shapecorr::map_geodesic_errors(target, truth_target, found);
+    te = shapecorr::summarize_map_errors(e[0]);
+    if(a.has("symmetric")) mirrored = shapecorr::summarize_map_errors(e[1]);
   }
   if(a.has("report")) {
     nlohmann::json j;
@@ -172,8 +144,8 @@ int run_correspond(const Args& a) {
     j["descriptor_seconds"] = report.descriptor_seconds;
     j["dense_seconds"] = report.dense_seconds;
     j["seconds"] = secs;
-    if(a.has("truth")) j["truth"] = te.to_json();
-    if(a.has("symmetric")) j["truth_symmetric"] = mirrored.to_json();
+    if(a.has("truth")) j["truth"] = to_json(te);
+    if(a.has("symmetric")) j["truth_symmetric"] = to_json(mirrored);
     std::ofstream out = open_output(a.get("report"));
     out << j.dump(2) << "\n";
   }
@@ -182,9 +154,9 @@ int run_correspond(const Args& a) {
               << " of " << report.starts << " tried), dense map of " << dense.size() << " vertices";
     if(a.has("truth"))
       std::cerr << "; geodesic error / sqrt(area) over " << te.pairs << " pairs: mean " << te.mean << ", largest " << te.largest << ", "
-                << 100 * te.within_quarter << " % within 0.25";
+                << 100 * te.fraction_within << " % within 0.25";
     if(a.has("symmetric"))
-      std::cerr << "; against the mirrored truth: mean " << mirrored.mean << ", largest " << mirrored.largest << ", " << 100 * mirrored.within_quarter
+      std::cerr << "; against the mirrored truth: mean " << mirrored.mean << ", largest " << mirrored.largest << ", " << 100 * mirrored.fraction_within
                 << " % within 0.25 (the map is " << (mirrored.mean < te.mean ? "the mirrored one" : "the direct one") << ")";
     std::cerr << "; " << secs << " s -> " << output << "\n";
   }
@@ -211,7 +183,7 @@ const Command& correspond_command() {
                                  {"starts", "S", "first vertices tried for the coarse level; the lowest energy is kept (default 3)"},
                                  {"candidates", "K", "candidate targets per feature, widened until the program is feasible (default 3)"},
                                  {"solver", "bb|mip", "the coarse program's solver: branch and bound (default) or GLPK"},
-                                 {"trim", "gsc|wks", "descriptor of the candidate pairs (default gsc)"},
+                                 {"trim", "gsc|wks|isc", "descriptor of the candidate pairs (default gsc)"},
                                  {"eigenpairs", "K", "largest spectral basis of the dense map's upsampling; 0: geodesic coordinates only (default 60)"},
                                  {"seed", "S", "seed of the first sampled vertex (default 0)"},
                                  {"sparse", "FILE", "the sparse matches: 'source target level' per line"},

@@ -6,5 +6,6 @@
 #ifndef SHAPECORR_EVALUATION_H
 #define SHAPECORR_EVALUATION_H
 #include <shapecorr/evaluation/descriptor_ranking.h>
+#include <shapecorr/evaluation/map_geodesic_error.h>
 #include <shapecorr/evaluation/surface_distance.h>
 #endif

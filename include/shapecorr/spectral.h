@@ -6,6 +6,7 @@
 #ifndef SHAPECORR_SPECTRAL_H
 #define SHAPECORR_SPECTRAL_H
 #include <shapecorr/operators.h>
+#include <shapecorr/spectral/Intrinsic_shape_context.h>
 #include <shapecorr/spectral/Laplace_beltrami_eigenbasis.h>
 #include <shapecorr/spectral/Spectra_eigensolver.h>
 #include <shapecorr/spectral/compute_heat_kernel_signature.h>

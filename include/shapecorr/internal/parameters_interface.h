@@ -30,6 +30,8 @@ SHAPECORR_add_named_parameter(log_time_range_t, log_time_range, log_time_range)
 SHAPECORR_add_named_parameter(log_time_step_t, log_time_step, log_time_step)
 SHAPECORR_add_named_parameter(time_unit_t, time_unit, time_unit)
 SHAPECORR_add_named_parameter(frequency_range_t, frequency_range, frequency_range)
+SHAPECORR_add_named_parameter(number_of_rings_t, number_of_rings, number_of_rings)
+SHAPECORR_add_named_parameter(number_of_directions_t, number_of_directions, number_of_directions)
 SHAPECORR_add_named_parameter(normalize_per_scale_t, normalize_per_scale, normalize_per_scale)
 // rigid descriptors
 SHAPECORR_add_named_parameter(support_length_t, support_length, support_length)

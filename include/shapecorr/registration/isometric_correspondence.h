@@ -16,6 +16,7 @@
 #include <shapecorr/internal/progress.h>
 #include <shapecorr/parameters.h>
 #include <shapecorr/registration/feature_matching.h>
+#include <shapecorr/spectral/Intrinsic_shape_context.h>
 #include <shapecorr/spectral/Laplace_beltrami_eigenbasis.h>
 #include <shapecorr/spectral/compute_wave_kernel_signature.h>
 #include <shapecorr/spectral/spectral_descriptor_distance.h>
@@ -41,8 +42,9 @@ namespace shapecorr {
 /// The descriptor that trims the candidate pairs of the coarse program (named parameter
 /// `trim_descriptor`).
 enum class Trim_descriptor {
-  GEODESIC_SPIN_CONTOUR, ///< Geodesic Spin Contours compared by L1 (the thesis's choice)
-  WAVE_KERNEL_SIGNATURE  ///< wave kernel signatures (100 energies on 100 eigenpairs) compared by L2
+  GEODESIC_SPIN_CONTOUR,  ///< Geodesic Spin Contours compared by L1 (the thesis's choice)
+  WAVE_KERNEL_SIGNATURE,  ///< wave kernel signatures (100 energies on 100 eigenpairs) compared by L2
+  INTRINSIC_SHAPE_CONTEXT ///< intrinsic shape contexts (`Intrinsic_shape_context`, its defaults, SI-HKS on 100 eigenpairs) compared by L2
 };
 
 /// \ingroup PkgShapeCorrRegistration
@@ -217,6 +219,13 @@ public:
       if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) {
         if(is_source) side.contours = contours_of(side, np1);
         else side.contours = contours_of(side, np2);
+      } else if(m_trim == Trim_descriptor::INTRINSIC_SHAPE_CONTEXT) {
+        if(!side.isc_context) { // the SI-HKS of all vertices: once; the contexts of the current features each time
+          const Laplace_beltrami_eigenbasis basis = is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np1)
+                                                              : compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np2);
+          side.isc_context = is_source ? make_isc(side, basis, np1) : make_isc(side, basis, np2);
+        }
+        side.isc = side.isc_context->descriptors(side.features);
       } else if(side.wks.rows() == 0) { // the signatures of all vertices: once (they do not depend on the features)
         const Laplace_beltrami_eigenbasis basis = is_source ? compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np1)
                                                             : compute_laplace_beltrami_eigenbasis(side.mesh(), std::min<std::size_t>(100, side.size() - 1), np2);
@@ -453,6 +462,7 @@ private:
     std::vector<std::size_t> source_features, target_features;
     std::vector<Eigen::VectorXd> source_fields, target_fields;
     std::vector<Spin_contour> source_contours, target_contours;
+    Eigen::MatrixXd source_isc, target_isc;
     std::vector<Match> matches;
     Coarse_matching_problem problem;
     Isometric_correspondence_report report;
@@ -518,6 +528,8 @@ private:
     Eigen::VectorXd nearest;                              // distance to the nearest feature
     std::vector<Spin_contour> contours;                   // GSC trim: the contours of the features
     Eigen::MatrixXd wks;                                  // WKS trim: the signatures of all vertices
+    std::shared_ptr<const Intrinsic_shape_context<TriangleMesh>> isc_context; // ISC trim
+    Eigen::MatrixXd isc;                                  // ISC trim: the contexts of the features (row i: feature i)
   };
 
   // the contours of the current features (position i: feature i)
@@ -525,6 +537,14 @@ private:
   static std::vector<Spin_contour> contours_of(const Side& side, const NamedParameters& np) {
     const Geodesic_spin_descriptors<TriangleMesh> gs(side.mesh(), np);
     return gs.geodesic_spin_contours(side.features, {});
+  }
+
+  // the intrinsic shape contexts of a side on `basis` (the parameters of np but its eigenbasis)
+  template <typename NamedParameters>
+  static std::shared_ptr<const Intrinsic_shape_context<TriangleMesh>> make_isc(const Side& side, const Laplace_beltrami_eigenbasis& basis,
+                                                                                const NamedParameters& np) {
+    return std::make_shared<const Intrinsic_shape_context<TriangleMesh>>(
+        side.mesh(), scale_invariant_heat_kernel_signature_matrix(basis, np), np);
   }
 
   // `np` with an empty progress callback in front (found first)
@@ -535,7 +555,7 @@ private:
   }
 
   Coarse_state save_coarse() const {
-    return {m_source.features, m_target.features, m_source.fields, m_target.fields, m_source.contours, m_target.contours,
+    return {m_source.features, m_target.features, m_source.fields, m_target.fields, m_source.contours, m_target.contours, m_source.isc, m_target.isc,
             m_matches,         m_problem,         m_report};
   }
   void restore_coarse(Coarse_state c) {
@@ -545,6 +565,8 @@ private:
     m_target.fields = std::move(c.target_fields);
     m_source.contours = std::move(c.source_contours);
     m_target.contours = std::move(c.target_contours);
+    m_source.isc = std::move(c.source_isc);
+    m_target.isc = std::move(c.target_isc);
     m_matches = std::move(c.matches);
     m_problem = std::move(c.problem);
     m_report = std::move(c.report);
@@ -560,6 +582,7 @@ private:
 
   double descriptor_distance(std::size_t s, std::size_t t) const {
     if(m_trim == Trim_descriptor::GEODESIC_SPIN_CONTOUR) return contour_l1_distance(m_source.contours[s], m_target.contours[t]);
+    if(m_trim == Trim_descriptor::INTRINSIC_SHAPE_CONTEXT) return (m_source.isc.row(long(s)) - m_target.isc.row(long(t))).norm();
     return (m_source.wks.row(long(m_source.features[s])) - m_target.wks.row(long(m_target.features[t]))).norm();
   }
 
