@@ -1,4 +1,4 @@
-// Laplace-Beltrami eigenbasis, WKS and HKS of a mesh; the WKS distance of every vertex to one vertex,
+// Laplace-Beltrami eigenbasis, WKS, HKS and intrinsic shape contexts of a mesh; the WKS distance of every vertex to one vertex,
 // written as a coloured PLY (the view of the thesis's Figure 4.6).
 // Usage: example_wave_kernel_signature [MESH [VERTEX]] (default: a generated torus, vertex 0).
 // Writes basis.eig and wks_distance.ply into the current folder (and says so).
@@ -51,6 +51,14 @@ int main(int argc, char** argv) {
   }
   std::cout << closer << " vertices have an HKS within 1e-3 of vertex " << static_cast<std::size_t>(source) << "'s"
             << (argc > 1 ? "\n" : " (on the default torus: the vertices of its ring, by its 64-fold rotational symmetry)\n");
+  // the intrinsic shape context: a geodesic polar histogram of the SI-HKS around each vertex
+  //! [isc]
+  const shapecorr::Intrinsic_shape_context<Mesh> isc(mesh, shapecorr::parameters::eigenbasis(&basis));
+  const Eigen::MatrixXd contexts = isc.descriptors({0, 1, 100});   // one row per vertex
+  const double d01 = shapecorr::spectral_descriptor_distance(contexts.row(0), contexts.row(1));
+  //! [isc]
+  std::cout << "ISC: " << isc.size() << " values per vertex (radius " << isc.radius() << "); distance of vertices 0 and 1: " << d01
+            << ", of 0 and 100: " << shapecorr::spectral_descriptor_distance(contexts.row(0), contexts.row(2)) << "\n";
   shapecorr::write_colored_ply("wks_distance.ply", mesh, distance, {static_cast<std::size_t>(source)});
   std::cout << "wrote " << std::filesystem::absolute("wks_distance.ply").string() << " (WKS distance to vertex "
             << static_cast<std::size_t>(source) << ", marked red; open it in MeshLab)\n";

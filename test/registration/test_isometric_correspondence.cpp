@@ -146,6 +146,29 @@ Soup cut_off(const Soup& s, std::array<double, 3> dir, double height) {
   return out;
 }
 
+// A long-limbed creature (limbs 2.5 times the default's) and a copy with its longest limb bent by
+// 10 degrees, renumbered (seed 11); the target's all-pairs geodesics and mean edge length.
+struct Bent_pair {
+  typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
+  Soup a, b;
+  std::vector<std::size_t> perm;
+  Mesh source, target;
+  Eigen::MatrixXd gt;
+  double edge = 0;
+  Bent_pair() {
+    Mesh straight, bent;
+    shapecorr::make_creature(straight, 4, 0.0, 2.5);
+    shapecorr::make_creature(bent, 4, 10.0, 2.5);
+    a = soup_of(straight);
+    perm = shuffled(a.points.size(), 11);
+    b = transformed(soup_of(bent), perm, [](const std::array<double, 3>& p) { return p; });
+    source = mesh_of<Mesh>(a);
+    target = mesh_of<Mesh>(b);
+    gt = all_geodesics(target);
+    edge = mean_edge(b);
+  }
+};
+
 } // namespace
 
 TEMPLATE_LIST_TEST_CASE("isometric correspondence: a creature and its moved, renumbered copy", "[isometric]", test::Mesh_types) {
@@ -193,16 +216,13 @@ TEST_CASE("isometric correspondence: a long-limbed creature and a bent, renumber
   // limbs 2.5 times as long as the default creature's: they are the extremities, which furthest
   // point sampling finds first on both shapes (with the default limbs it picks body points and
   // the renumbered pair fails: see the limitations); the longest limb bent by 10 degrees
-  typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
-  Mesh straight, bent;
-  shapecorr::make_creature(straight, 4, 0.0, 2.5);
-  shapecorr::make_creature(bent, 4, 10.0, 2.5);
-  const Soup a = soup_of(straight);
-  const std::vector<std::size_t> perm = shuffled(a.points.size(), 11);
-  const Soup b = transformed(soup_of(bent), perm, [](const std::array<double, 3>& p) { return p; });
-  const Mesh source = mesh_of<Mesh>(a), target = mesh_of<Mesh>(b);
-  const Eigen::MatrixXd gt = all_geodesics(target);
-  const double edge = mean_edge(b);
+  typedef Bent_pair::Mesh Mesh;
+  const Bent_pair pair;
+  const Soup& a = pair.a;
+  const std::vector<std::size_t>& perm = pair.perm;
+  const Mesh &source = pair.source, &target = pair.target;
+  const Eigen::MatrixXd& gt = pair.gt;
+  const double edge = pair.edge;
   for(unsigned seed = 0; seed < 6; ++seed) {
     shapecorr::Isometric_correspondence<Mesh> method(source, target, SP::number_of_levels(2).random_seed(seed));
     const auto& report = method.run();
@@ -220,16 +240,12 @@ TEST_CASE("isometric correspondence: a long-limbed creature and a bent, renumber
 }
 
 TEST_CASE("isometric correspondence: each trim descriptor (GSC, WKS, ISC) on the long-limbed, bent, renumbered pair", "[isometric]") {
-  typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
-  Mesh straight, bent;
-  shapecorr::make_creature(straight, 4, 0.0, 2.5);
-  shapecorr::make_creature(bent, 4, 10.0, 2.5);
-  const Soup a = soup_of(straight);
-  const std::vector<std::size_t> perm = shuffled(a.points.size(), 11);
-  const Soup b = transformed(soup_of(bent), perm, [](const std::array<double, 3>& p) { return p; });
-  const Mesh source = mesh_of<Mesh>(a), target = mesh_of<Mesh>(b);
-  const Eigen::MatrixXd gt = all_geodesics(target);
-  const double edge = mean_edge(b);
+  typedef Bent_pair::Mesh Mesh;
+  const Bent_pair pair;
+  const std::vector<std::size_t>& perm = pair.perm;
+  const Mesh &source = pair.source, &target = pair.target;
+  const Eigen::MatrixXd& gt = pair.gt;
+  const double edge = pair.edge;
   // GSC and WKS: right from seeds 0 and 1 (measured: from each of 0 to 5); ISC: right from 4 of
   // seeds 0 to 5 (measured: 0, 3, 4, 5; from 1 and 2 the coarse level keeps a wrong configuration,
   // matches tens of edge lengths away)

@@ -161,7 +161,7 @@ struct Isometric_correspondence_report {
 /// | `number_of_eigenpairs` | largest spectral basis of the dense map; 0: geodesic coordinates only | `std::size_t` | 60 |
 /// | `random_seed` | seed of the first sampled vertex | `unsigned` | 0 |
 /// | `number_of_starts` | first vertices tried by `run()` (stages 1 to 4 each) | `std::size_t` | 3 |
-/// | `support_fraction`, `agd_radius_fraction`, ... | Geodesic Spin Contour parameters | | those of `Geodesic_spin_descriptors` |
+/// | `support_fraction`, `agd_radius_fraction`, ... | the trim descriptor's parameters (`support_fraction`: GSC's L / D, or ISC's R / D) | | those of `Geodesic_spin_descriptors`, `Intrinsic_shape_context` |
 /// | `progress_callback` | `f(done, total)` after each stage of `run()` | `std::function<void(size_t, size_t)>` | none |
 ///
 /// \throws Invalid_input for an empty mesh, non-triangle faces, non-finite coordinates, a mesh
