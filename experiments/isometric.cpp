@@ -191,10 +191,14 @@ void run_case(const Case& c, const Options& o) {
   for(std::size_t v = 0; v < ns; ++v)
     if(c.truth_of[v] != none && (c.mirror_of.empty() || c.mirror_of[v] != none)) with_truth.push_back(v);
   const std::size_t stride = std::max<std::size_t>(1, with_truth.size() / o.truth_points);
+  // a true vertex off the target's largest component (a vertex a non-manifold repair left alone,
+  // its faces moved to duplicates) is unreachable: its place on that component stands for it
+  const Main_component target_main(c.target);
+  auto snap = [&](std::size_t t) { return target_main.shape.original[target_main.main_of[t]]; };
   std::vector<std::size_t> pair_source, pair_truth;
   for(std::size_t i = 0; i < with_truth.size(); i += stride) {
     pair_source.push_back(with_truth[i]);
-    pair_truth.push_back(c.truth_of[with_truth[i]]);
+    pair_truth.push_back(snap(c.truth_of[with_truth[i]]));
   }
   const bool symmetric = !c.mirror_of.empty();
   json j{{"name", c.name}, {"kind", c.kind}, {"source_vertices", ns}, {"target_vertices", c.target.number_of_vertices()}, {"truth_pairs", pair_source.size()}};
@@ -207,7 +211,7 @@ void run_case(const Case& c, const Options& o) {
     r.dense = e[0];
     if(symmetric) { // the mirror truth of s: map[s] should be mirror_of[s]
       std::vector<std::size_t> mt;
-      for(std::size_t s : pair_source) mt.push_back(c.mirror_of[s]);
+      for(std::size_t s : pair_source) mt.push_back(snap(c.mirror_of[s]));
       r.dense_mirror = shapecorr::map_geodesic_errors(c.target, mt, found, SP::number_of_threads(o.threads))[0];
     }
   };
@@ -220,7 +224,8 @@ void run_case(const Case& c, const Options& o) {
     const auto t0 = std::chrono::steady_clock::now();
     // the method wants one connected component: on a mesh with several (camel frames 1 and 5 after
     // their non-manifold edges are split) it runs on the largest, and the map is carried back
-    const Main_component src(c.source.mesh), tgt(c.target);
+    const Main_component src(c.source.mesh);
+    const Main_component& tgt = target_main;
     shapecorr::Isometric_correspondence<Mesh> method(src.shape.mesh, tgt.shape.mesh,
                                                      SP::trim_descriptor(t).number_of_threads(o.threads).number_of_eigenpairs(c.kind == "cut" ? 0 : 60));
     shapecorr::Isometric_correspondence_report report = method.run();
@@ -241,8 +246,8 @@ void run_case(const Case& c, const Options& o) {
     std::vector<Slot> slots;
     auto add = [&](const shapecorr::Vertex_match& m, Slot s) {
       if(c.truth_of[m.source] == none || (symmetric && c.mirror_of[m.source] == none)) return;
-      truth.push_back(c.truth_of[m.source]);
-      mirror.push_back(symmetric ? c.mirror_of[m.source] : c.truth_of[m.source]);
+      truth.push_back(snap(c.truth_of[m.source]));
+      mirror.push_back(snap(symmetric ? c.mirror_of[m.source] : c.truth_of[m.source]));
       found.push_back(m.target);
       slots.push_back(s);
     };
@@ -297,8 +302,17 @@ void run_case(const Case& c, const Options& o) {
     std::string source_file = c.source_file;
     if(source_file.empty()) { // a cut source: written for pyFM
       source_file = o.out + "/work/" + c.name + "_source.off";
-      if(!CGAL::IO::write_polygon_mesh(source_file, c.source.mesh, CGAL::parameters::stream_precision(17)))
-        throw std::runtime_error("cannot write " + source_file);
+      // plain OFF: "OFF", the counts, the points, the triangles (pyFM's reader wants exactly that)
+      std::ofstream off(source_file);
+      off.precision(17);
+      off << "OFF\n" << c.source.mesh.number_of_vertices() << " " << c.source.mesh.number_of_faces() << " 0\n";
+      for(auto v : c.source.mesh.vertices()) off << c.source.mesh.point(v) << "\n";
+      for(auto f : c.source.mesh.faces()) {
+        off << "3";
+        for(auto v : CGAL::vertices_around_face(c.source.mesh.halfedge(f), c.source.mesh)) off << " " << v.idx();
+        off << "\n";
+      }
+      if(!off) throw std::runtime_error("cannot write " + source_file);
     }
     const std::string map_file = o.out + "/work/" + c.name + "_pyfm.txt", log = o.out + "/work/" + c.name + "_pyfm.log";
     const std::string cmd = "'" + o.python + "' '" + o.pyfm + "' '" + o.peers + "' '" + source_file + "' '" + c.target_file + "' '" + map_file + "' > '" + log + "' 2>&1";
