@@ -7,7 +7,8 @@
 // (the map judged against the truth or its left-right mirror, whichever it is nearer on average).
 // Cases: the pairs of tosca5k/test_pairs.txt, camel_gallop frames (pyFM's maps as truth), lion ->
 // cat (non-isometric), and cut sources (a tosca pair per class, the source's extremity of largest
-// agd removed). One JSON file per case in OUTPUT/cases (an existing one is kept: runs resume);
+// agd removed). One JSON file per case in OUTPUT/cases; a case file done before keeps its methods
+// and gets only those it lacks (runs resume; another trim can be added later);
 // experiments/isometric_summary.py makes the tables and figures.
 // usage: evaluate_isometric [--data DIR] [--output DIR] [--cases tosca,camel,lion,cut] [--trims gsc,wks,isc]
 //        [--extra-trims-every N] [--part I/N] [--limit N] [--truth-points 1000] [--pyfm SCRIPT|none]
@@ -179,8 +180,16 @@ struct Options {
 };
 
 void run_case(const Case& c, const Options& o) {
+  // a case file done before keeps its methods; only the methods it lacks run (e.g. another trim)
   const std::string path = o.out + "/cases/" + c.name + ".json";
-  if(std::ifstream(path)) {
+  json before;
+  if(std::ifstream in{path}) in >> before;
+  auto missing = [&](const std::string& method) { return !before.contains("methods") || !before["methods"].contains(method); };
+  std::vector<std::string> trims;
+  for(const std::string& t : split(o.trims, ','))
+    if(missing("ours-" + t)) trims.push_back(t);
+  const bool run_pyfm = o.pyfm != "none" && missing("pyfm");
+  if(trims.empty() && !run_pyfm) {
     std::cerr << c.name << ": done before (" << path << ")\n";
     return;
   }
@@ -201,7 +210,8 @@ void run_case(const Case& c, const Options& o) {
     pair_truth.push_back(snap(c.truth_of[with_truth[i]]));
   }
   const bool symmetric = !c.mirror_of.empty();
-  json j{{"name", c.name}, {"kind", c.kind}, {"source_vertices", ns}, {"target_vertices", c.target.number_of_vertices()}, {"truth_pairs", pair_source.size()}};
+  json j = before.is_object() ? before : json{{"name", c.name}, {"kind", c.kind}, {"source_vertices", ns},
+                                              {"target_vertices", c.target.number_of_vertices()}, {"truth_pairs", pair_source.size()}};
   auto dense_errors = [&](const std::vector<std::size_t>& map, Method_result& r) {
     // the mirror list: the map at the mirror images' true target vertices, i.e. for pair (s, t)
     // the source vertex whose mirror truth is t: found by the mirror truth of s's counterpart
@@ -216,7 +226,6 @@ void run_case(const Case& c, const Options& o) {
     }
   };
   // ours, with each trim
-  const auto trims = split(o.trims, ',');
   for(const std::string& trim : trims) {
     const auto t = trim == "gsc" ? shapecorr::Trim_descriptor::GEODESIC_SPIN_CONTOUR
                                  : trim == "wks" ? shapecorr::Trim_descriptor::WAVE_KERNEL_SIGNATURE : shapecorr::Trim_descriptor::INTRINSIC_SHAPE_CONTEXT;
@@ -298,7 +307,7 @@ void run_case(const Case& c, const Options& o) {
               << " % < 0.25), " << r.seconds << " s\n";
   }
   // pyFM, as a separate process on the same files
-  if(o.pyfm != "none") {
+  if(run_pyfm) {
     std::string source_file = c.source_file;
     if(source_file.empty()) { // a cut source: written for pyFM
       source_file = o.out + "/work/" + c.name + "_source.off";
