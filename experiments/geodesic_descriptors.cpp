@@ -44,6 +44,7 @@
 #include <sstream>
 
 namespace {
+using eval::split;
 using eval::K;
 using eval::Mesh;
 using eval::Vertex;
@@ -236,15 +237,6 @@ std::vector<std::size_t> read_map(const std::string& path, std::size_t n_source,
   }
   if(m.size() != n_source) throw std::runtime_error(path + ": " + std::to_string(m.size()) + " entries for " + std::to_string(n_source) + " vertices");
   return m;
-}
-
-std::vector<std::string> split(const std::string& s, char c) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string tok;
-  while(std::getline(in, tok, c))
-    if(!tok.empty()) out.push_back(tok);
-  return out;
 }
 
 std::string upper(std::string s) {

@@ -33,6 +33,7 @@
 #include <sstream>
 
 namespace {
+using eval::split;
 using eval::Mesh;
 using eval::none;
 namespace SP = shapecorr::parameters;
@@ -46,15 +47,6 @@ struct Case {
   std::vector<std::size_t> truth_of, mirror_of; // per source vertex: its true target vertex / that of its mirror image (none: unknown)
   std::size_t file_vertices = none;              // vertices of the source file (before a repair's duplicates)
 };
-
-std::vector<std::string> split(const std::string& s, char c) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string x;
-  while(std::getline(in, x, c))
-    if(!x.empty()) out.push_back(x);
-  return out;
-}
 
 std::vector<std::size_t> read_map(const std::string& path, std::size_t n_source) {
   std::ifstream in(path);

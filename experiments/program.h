@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace eval {
 
@@ -35,6 +36,16 @@ inline bool has_evaluation_data(const std::string& program, const std::string& d
   if(std::ifstream(data + "/README.md")) return true;
   std::cerr << program << ": no evaluation data at " << data << " (give --data DIR)\n";
   return false;
+}
+
+// The non-empty fields of s between separators c ("a,b,,c" -> a, b, c).
+inline std::vector<std::string> split(const std::string& s, char c) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string field;
+  while(std::getline(in, field, c))
+    if(!field.empty()) out.push_back(field);
+  return out;
 }
 
 // A number for a JSON file: 6 significant digits, 0 for NaN and infinities (not JSON).

@@ -51,6 +51,7 @@
 #include <sstream>
 
 namespace {
+using eval::split;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
@@ -175,15 +176,6 @@ struct Options {
   std::size_t skip = 0, limit = 0, truth_points = 500, robustness_specimens = 5;
   bool open3d = true;
 };
-
-std::vector<std::string> split(const std::string& s, char c) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while(std::getline(ss, item, c))
-    if(!item.empty()) out.push_back(item);
-  return out;
-}
 
 // The instances of a case.
 std::vector<std::function<Instance()>> instances(const std::string& kind, const Options& o) {

@@ -10,6 +10,7 @@
 
 #include <shapecorr/exceptions.h>
 #include <shapecorr/geodesics/Fast_marching_geodesics.h>
+#include <shapecorr/geodesics/average_geodesic_distance.h>
 #include <shapecorr/parallel.h>
 #include <shapecorr/parameters.h>
 
@@ -47,12 +48,7 @@ std::vector<std::vector<double>> map_geodesic_errors(const TriangleMesh& target,
     for(const auto& list : found) ok = ok && list[k] < n;
     if(!ok) throw Invalid_argument("map geodesic errors: pair " + std::to_string(k) + " names a vertex the target does not have");
   }
-  const internal::Triangle_arrays& a = engine.arrays();
-  double area = 0;
-  for(Eigen::Index f = 0; f < a.F.rows(); ++f) {
-    const Eigen::Vector3d p = a.V.row(a.F(f, 0)), q = a.V.row(a.F(f, 1)), r = a.V.row(a.F(f, 2));
-    area += 0.5 * (q - p).cross(r - p).norm();
-  }
+  const double area = internal::incident_triangle_areas(engine.arrays()).sum() / 3.0; // (each triangle counted at its 3 corners)
   if(!(area > 0) || !std::isfinite(area)) throw Invalid_argument("map geodesic errors: the target has no area");
   const double scale = 1.0 / std::sqrt(area);
   std::map<std::size_t, std::vector<std::size_t>> pairs_of; // true vertex -> the pairs that name it

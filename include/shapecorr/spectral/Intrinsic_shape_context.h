@@ -130,7 +130,8 @@ public:
   public:
     /// A workspace for `isc`'s descriptors.
     explicit Workspace(const Intrinsic_shape_context& isc)
-      : m_owner(&isc), u(isc.number_of_vertices(), Eigen::Vector2d::Zero()), placed(isc.number_of_vertices(), 0) {}
+      : m_owner(&isc), u(isc.number_of_vertices(), Eigen::Vector2d::Zero()), frame(isc.number_of_vertices()), placed(isc.number_of_vertices(), 0),
+        framed(isc.number_of_vertices(), 0) {}
 
   private:
     friend class Intrinsic_shape_context;
@@ -138,7 +139,9 @@ public:
     typename Fast_marching_geodesics<TriangleMesh>::Workspace fmm;
     Ball ball;
     std::vector<Eigen::Vector2d> u;    // exponential-map coordinates
+    std::vector<Eigen::Matrix<double, 3, 2>> frame; // x's frame carried to the vertex (columns: the two axes)
     std::vector<unsigned> placed;      // == stamp: u is set for this call
+    std::vector<unsigned> framed;      // == stamp: frame is set for this call (not for a normal opposite to x's)
     unsigned stamp = 0;
   };
 
@@ -255,6 +258,7 @@ private:
     std::sort(ball.begin(), ball.end(), [](const auto& p, const auto& q) { return p.second < q.second || (p.second == q.second && p.first < q.first); });
     if(++ws.stamp == 0) { // wrapped: clear the records
       std::fill(ws.placed.begin(), ws.placed.end(), 0u);
+      std::fill(ws.framed.begin(), ws.framed.end(), 0u);
       ws.stamp = 1;
     }
     const unsigned s = ws.stamp;
@@ -263,8 +267,18 @@ private:
     const Eigen::Vector3d nx = m_normal[x];
     const int axis = nx.cwiseAbs().minCoeff() == std::abs(nx.x()) ? 0 : nx.cwiseAbs().minCoeff() == std::abs(nx.y()) ? 1 : 2;
     const Eigen::Vector3d e1 = (Eigen::Vector3d::Unit(axis) - nx[axis] * nx).normalized(), e2 = nx.cross(e1);
+    // x's frame carried to a placed vertex by the rotation taking nx to its normal, once per vertex
+    // (none for a normal opposite to nx: no meaningful rotation)
+    auto place = [&](std::size_t v) {
+      ws.placed[v] = s;
+      if(nx.dot(m_normal[v]) < -0.999) return;
+      const Eigen::Quaterniond rot = Eigen::Quaterniond::FromTwoVectors(nx, m_normal[v]);
+      ws.frame[v].col(0) = rot * e1;
+      ws.frame[v].col(1) = rot * e2;
+      ws.framed[v] = s;
+    };
     ws.u[x].setZero();
-    ws.placed[x] = s;
+    place(x);
     // the bins: weighted sums of f and their weights
     const Eigen::Index F = m_f.cols(), R = Eigen::Index(m_rings), T = Eigen::Index(m_dirs);
     Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(R * T, F);
@@ -295,12 +309,9 @@ private:
       double wsum = 0;
       for(std::size_t k = m_adj_begin[y]; k < m_adj_begin[y + 1]; ++k) {
         const std::size_t p = m_adj[k];
-        if(ws.placed[p] != s) continue;
+        if(ws.placed[p] != s || ws.framed[p] != s) continue;
         const Eigen::Vector3d np_ = m_normal[p];
-        if(nx.dot(np_) < -0.999) continue; // opposite normals: no meaningful rotation
-        // x's frame carried to p by the rotation taking nx to np
-        const Eigen::Quaterniond rot = Eigen::Quaterniond::FromTwoVectors(nx, np_);
-        const Eigen::Vector3d f1 = rot * e1, f2 = rot * e2;
+        const auto& f = ws.frame[p];
         const Eigen::Vector3d d = py - a.point(p);
         const double len = d.norm();
         if(!(len > 0)) continue;
@@ -308,12 +319,12 @@ private:
         const double lt = dt.norm();
         if(lt > 1e-12 * len) dt *= len / lt;
         const double w = 1.0 / len;
-        acc += w * (ws.u[p] + Eigen::Vector2d(dt.dot(f1), dt.dot(f2)));
+        acc += w * (ws.u[p] + Eigen::Vector2d(dt.dot(f.col(0)), dt.dot(f.col(1))));
         wsum += w;
       }
       if(!(wsum > 0)) continue; // no placed neighbour (a disc cut by the mesh's border): no angle
       ws.u[y] = acc / wsum;
-      ws.placed[y] = s;
+      place(y);
       const double theta = std::atan2(ws.u[y].y(), ws.u[y].x()); // (-pi, pi]
       ring_split(q.second, y, m_area[Eigen::Index(y)], [&](Eigen::Index r, double w, std::size_t yy) {
         double c = (theta + pi) / (2 * pi) * double(T) - 0.5;
