@@ -169,3 +169,10 @@ pl = runs.get("BM_Pipeline/iterations:1/real_time")
 ap = runs.get("BM_Reference_AllPairsGeodesics_BothShapes/iterations:1/real_time")
 if pl and ap:
     print(f"pipeline: {ms(pl)/1e3:.2f} s; all-pairs geodesics of both shapes: {ms(ap)/1e3:.2f} s -> ratio {ms(pl)/ms(ap):.2f}")
+# Shape model (bench_shape_model): the Gram route against the dense SVD of the same data matrix.
+gm = runs.get("BM_Pca_GramMatrix/real_time")
+sv = runs.get("BM_Reference_Pca_DenseSvd/real_time")
+bm = runs.get("BM_BuildModel/real_time")
+if gm and sv:
+    print(f"PCA of {gm['shapes']:.0f} shapes x {gm['vertices']:.0f} vertices: Gram matrix {ms(gm):.1f} ms, dense SVD {ms(sv):.1f} ms -> "
+          f"{ms(sv)/ms(gm):.1f}x; variances agree to {gm['variance_rel_diff']:.1e} (relative)" + (f"; whole build (Procrustes + PCA) {ms(bm):.0f} ms" if bm else ""))

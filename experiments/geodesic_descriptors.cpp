@@ -15,7 +15,7 @@
 //        whole,cut,delete20,delete40,delete60,loop] [--descriptors gsc,gsi,hks,wks,sihks,isc,si]
 //        [--points 50] [--seed 1] [--threads T] [--support L/D] [--agd-radius r/D]
 #include "program.h"
-#include "plot.h"
+#include <shapecorr/io/line_plot.h>
 #include "shapes.h"
 
 #include <shapecorr/descriptors.h>
@@ -340,10 +340,10 @@ int main(int argc, char** argv) {
         const auto rs = run_case(c, split(descriptors, ','), threads);
         std::ofstream csv(out + "/" + c.name + ".csv");
         csv << "descriptor,k,percent,hit_rate,geodesic_error\n";
-        std::vector<eval::Curve> hit, err;
+        std::vector<shapecorr::Plot_curve> hit, err;
         double emax = 0;
         for(const auto& r : rs) {
-          eval::Curve h{r.label, {}, {}}, e{r.label, {}, {}};
+          shapecorr::Plot_curve h{r.label, {}, {}}, e{r.label, {}, {}};
           const std::size_t N = r.curves.number_of_targets;
           for(std::size_t k = 1; k <= N; ++k) {
             const double pct = 100.0 * static_cast<double>(k) / static_cast<double>(N);
@@ -359,9 +359,9 @@ int main(int argc, char** argv) {
           hit.push_back(h);
           err.push_back(e);
         }
-        shapecorr::write_png(out + "/" + c.name + "_hit_rate.png", eval::line_plot(hit, c.title, "100 K / N", "HIT RATE", 10.0, 1.0));
+        shapecorr::write_png(out + "/" + c.name + "_hit_rate.png", shapecorr::line_plot(hit, c.title, "100 K / N", "HIT RATE", 10.0, 1.0));
         shapecorr::write_png(out + "/" + c.name + "_geodesic_error.png",
-                             eval::line_plot(err, c.title, "100 K / N", "GEODESIC ERROR", 10.0, std::max(0.05, std::ceil(emax * 20) / 20)));
+                             shapecorr::line_plot(err, c.title, "100 K / N", "GEODESIC ERROR", 10.0, std::max(0.05, std::ceil(emax * 20) / 20)));
         json << (first_case ? "" : ",") << "\n    \"" << c.name << "\": {\"source_vertices\": " << c.source.mesh.number_of_vertices()
              << ", \"target_vertices\": " << B.number_of_vertices() << ", \"points\": " << c.points.size() << ", \"support\": " << c.support
              << ", \"agd_radius\": " << c.radius;

@@ -20,7 +20,7 @@
 // template vertex nearest to each landmark, carried by the fit), iterations, time, divergence
 // (l2 after >= l2 before, or not finite). Writes OUT/CASE.csv, OUT/CASE_l2.png,
 // OUT/tosca_cumulative[_symmetric].png and OUT/summary.json (cases run before into OUT stay in it).
-#include "plot.h"
+#include <shapecorr/io/line_plot.h>
 #include "program.h"
 
 #include <shapecorr/evaluation.h>
@@ -449,8 +449,8 @@ std::vector<Result> evaluate(Instance& in, const Options& o, const std::string& 
 double mean(const std::vector<double>& v) { return v.empty() ? std::numeric_limits<double>::quiet_NaN() : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
 
 // Fraction of the errors at most e, for e in [0, 0.25] (the Princeton protocol's curve).
-eval::Curve cumulative(const std::string& label, const std::vector<double>& errors) {
-  eval::Curve c;
+shapecorr::Plot_curve cumulative(const std::string& label, const std::vector<double>& errors) {
+  shapecorr::Plot_curve c;
   c.label = label;
   std::vector<double> s = errors;
   std::sort(s.begin(), s.end());
@@ -545,7 +545,7 @@ int main(int argc, char** argv) {
     nlohmann::json c;
     c["specimens"] = names;
     c["rigid_stage"] = rigid_rows;
-    std::vector<eval::Curve> curves;
+    std::vector<shapecorr::Plot_curve> curves;
     double ymax = 0;
     for(const auto& kv : l2_of) {
       nlohmann::json m;
@@ -562,7 +562,7 @@ int main(int argc, char** argv) {
         m["mean_geodesic_error_sym"] = mean(all_errors_sym[kv.first]);
       }
       c["methods"][kv.first] = m;
-      eval::Curve cv;
+      shapecorr::Plot_curve cv;
       cv.label = kv.first;
       for(std::size_t i = 0; i < kv.second.size(); ++i) {
         cv.x.push_back(static_cast<double>(i + 1));
@@ -574,15 +574,15 @@ int main(int argc, char** argv) {
     summary["cases"][kind] = c;
     if(!names.empty())
       shapecorr::write_png(o.out + "/" + kind + "_l2.png",
-                           eval::line_plot(curves, kind + ": l2 distance to the target per specimen", "specimen", "l2", static_cast<double>(names.size()) + 1, ymax * 1.1));
+                           shapecorr::line_plot(curves, kind + ": l2 distance to the target per specimen", "specimen", "l2", static_cast<double>(names.size()) + 1, ymax * 1.1));
     if(!all_errors.empty()) {
-      std::vector<eval::Curve> cum, cum_sym;
+      std::vector<shapecorr::Plot_curve> cum, cum_sym;
       for(const auto& kv : all_errors) cum.push_back(cumulative(kv.first, kv.second));
       for(const auto& kv : all_errors_sym) cum_sym.push_back(cumulative(kv.first, kv.second));
       shapecorr::write_png(o.out + "/" + kind + "_cumulative.png",
-                           eval::line_plot(cum, kind + ": correspondences within a geodesic error", "geodesic error / sqrt(area)", "fraction", 0.25, 1.0));
+                           shapecorr::line_plot(cum, kind + ": correspondences within a geodesic error", "geodesic error / sqrt(area)", "fraction", 0.25, 1.0));
       shapecorr::write_png(o.out + "/" + kind + "_cumulative_symmetric.png",
-                           eval::line_plot(cum_sym, kind + ": the same, a left-right flip counted as correct", "geodesic error / sqrt(area)", "fraction", 0.25, 1.0));
+                           shapecorr::line_plot(cum_sym, kind + ": the same, a left-right flip counted as correct", "geodesic error / sqrt(area)", "fraction", 0.25, 1.0));
     }
     std::ofstream(o.out + "/summary.json") << summary.dump(1) << "\n";
   }

@@ -17,7 +17,7 @@
 // Usage: evaluate_rigid_descriptors [--data DIR] [--output DIR] [--points N] [--seed S]
 //                                   [--experiments NAME,...] [--threads T]
 #include "program.h"
-#include "plot.h"
+#include <shapecorr/io/line_plot.h>
 
 #include <shapecorr/descriptors.h>
 #include <shapecorr/io.h>
@@ -384,13 +384,13 @@ int main(int argc, char** argv) {
       const std::vector<Result> rs = run(ex, n_points, seed, threads);
       std::ofstream csv(out + "/" + ex.name + ".csv");
       csv << "descriptor,threshold,one_minus_precision,recall\n";
-      std::vector<eval::Curve> curves;
+      std::vector<shapecorr::Plot_curve> curves;
       for(const auto& r : rs) {
         for(std::size_t k = 0; k < r.recall.size(); ++k)
           csv << r.label << "," << r.threshold[k] << "," << r.one_minus_precision[k] << "," << r.recall[k] << "\n";
         curves.push_back({r.label, r.one_minus_precision, r.recall});
       }
-      shapecorr::write_png(out + "/" + ex.name + ".png", eval::line_plot(curves, ex.title, "1 - PRECISION", "RECALL"));
+      shapecorr::write_png(out + "/" + ex.name + ".png", shapecorr::line_plot(curves, ex.title, "1 - PRECISION", "RECALL"));
       json << (first_ex ? "" : ",") << "\n    \"" << ex.name << "\": {";
       first_ex = false;
       for(std::size_t k = 0; k < rs.size(); ++k)

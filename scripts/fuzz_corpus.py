@@ -375,31 +375,41 @@ def fnv1a(data, h=14695981039346656037):
     return h
 
 
+def resealed(b):
+    """`b` with its trailing 8-byte FNV-1a checksum recomputed: a mutant that passes the checksum."""
+    b = bytes(b[:-8])
+    return b + struct.pack("<Q", fnv1a(b))
+
+
+class Mutants:
+    """Mutant files of a checked binary file in a folder: truncations at `cuts` and 12 bit flips
+    (seeded); `add` writes more."""
+
+    def __init__(self, data, out_dir, ext, cuts):
+        os.makedirs(out_dir, exist_ok=True)
+        self.dir, self.ext, self.files = out_dir, ext, []
+        for cut in sorted(set(cuts + [len(data) // 2, len(data) - 8, len(data) - 1])):
+            self.add(f"cut{cut}", data[:cut])
+        rng = random.Random(SEED)
+        for j in range(12):
+            m = bytearray(data)
+            m[rng.randrange(len(m))] ^= 1 << rng.randrange(8)
+            self.add(f"flip{j}", bytes(m))
+
+    def add(self, name, b):
+        p = os.path.join(self.dir, name + self.ext)
+        open(p, "wb").write(b)
+        self.files.append(p)
+
+
 def eigenbasis_mutants(base, out_dir):
     """Mutants of a saved basis: truncations, bit flips, overflowing sizes, and contents with a
     correct checksum that are still wrong (NaN, inf, negative, unsorted eigenvalues; NaN masses
     and vectors)."""
-    os.makedirs(out_dir, exist_ok=True)
     data = open(base, "rb").read()
     n, k = struct.unpack_from("<QQ", data, 12)
-    files = []
-
-    def add(name, b):
-        p = os.path.join(out_dir, name)
-        open(p, "wb").write(b)
-        files.append(p)
-
-    def resealed(b):
-        b = bytes(b[:-8])
-        return b + struct.pack("<Q", fnv1a(b))
-
-    for cut in sorted(set([0, 4, 8, 12, 20, 28, 36, 44, len(data) // 2, len(data) - 8, len(data) - 1])):
-        add(f"cut{cut}.eig", data[:cut])
-    rng = random.Random(SEED)
-    for j in range(12):
-        m = bytearray(data)
-        m[rng.randrange(len(m))] ^= 1 << rng.randrange(8)
-        add(f"flip{j}.eig", bytes(m))
+    mutants = Mutants(data, out_dir, ".eig", [0, 4, 8, 12, 20, 28, 36, 44])
+    add = lambda name, b: mutants.add(name[:-4], b)
     for j, nn in enumerate([2 ** 61, 2 ** 61 + 1, 2 ** 64 - 1, 0, n + 1, n - 1]):
         m = bytearray(data)
         m[12:20] = struct.pack("<Q", nn)
@@ -420,7 +430,35 @@ def eigenbasis_mutants(base, out_dir):
     add("version1.eig", b"SCLBEIG1" + data[8:])
     add("foreign.eig", b"OFF\n3 1 0\n")
     add("other_byte_order.eig", resealed(data[:8] + data[8:12][::-1] + data[12:]))
-    return files
+    return mutants.files
+
+
+def shape_model_mutants(base, out_dir):
+    """Mutants of a saved shape model (SCSSM001): truncations, bit flips, overflowing counts, and
+    contents with a correct checksum that are still wrong (NaN mean, negative or rising variances,
+    modes that are not orthonormal, a triangle beyond the vertices)."""
+    data = open(base, "rb").read()
+    n, m, k, N = struct.unpack_from("<QQQQ", data, 12)
+    mutants = Mutants(data, out_dir, ".ssm", [0, 8, 12, 20, 44, 60, len(data) // 3])
+    add = lambda name, b: mutants.add(name[:-4], b)
+    for field, at in (("n", 12), ("m", 20), ("k", 28), ("N", 36)):
+        for j, value in enumerate([2 ** 61, 2 ** 64 - 1, 0, 1 << 40]):
+            b = bytearray(data)
+            b[at:at + 8] = struct.pack("<Q", value)
+            add(f"{field}{j}.ssm", resealed(b))
+    mean = 60
+    variances = mean + 8 * 3 * n
+    modes = variances + 8 * k
+    triangles = modes + 8 * 3 * n * k + 8 * k * N
+    for j, (at, fmt, val) in enumerate([(mean, "<d", float("nan")), (variances, "<d", -1.0), (variances + 8, "<d", 1e300), (modes, "<d", 5.0),
+                                        (52, "<d", float("nan")), (52, "<d", 0.0), (44, "<Q", 7), (triangles, "<Q", n), (triangles, "<Q", 2 ** 63)]):
+        b = bytearray(data)
+        b[at:at + 8] = struct.pack(fmt, val)
+        add(f"content{j}.ssm", resealed(b))
+    add("version2.ssm", b"SCSSM002" + data[8:])
+    add("eigenbasis.ssm", b"SCLBEIG2" + data[8:])
+    add("foreign.ssm", b"OFF\n3 1 0\n")
+    return mutants.files
 
 # ---------------------------------------------------------------- the runs
 
@@ -543,6 +581,10 @@ def mesh_jobs(bin_, path, work, base):
         ([bin_, "register", base, path, "--method", BASELINES[sum(name.encode()) % len(BASELINES)], "--iterations", "2", "--output", o + "_base.off",
           "--report", o + "_base.json"] + q, name, [o + "_base.off", o + "_base.json"], False),
         ([bin_, "distance", path, base, "--json"], name, [], True),
+        # the template fit (the base onto the file) and a shape model of the file twice
+        ([bin_, "fit", base, path, "--iterations", "2", "--output", o + "_fit.off", "--report", o + "_fit.json"] + q, name,
+         [o + "_fit.off", o + "_fit.json"], False),
+        ([bin_, "ssm", "build", path, path, "--output", o + ".ssm"] + q, name, [], False),
         # near-isometric correspondence from the file to the base mesh (small: one start, one level)
         ([bin_, "correspond", path, base, "--features", "4", "--levels", "1", "--per-level", "4", "--starts", "1", "--eigenpairs", "8",
           "--output", o + "_corr.txt", "--report", o + "_corr.json"] + q, name, [o + "_corr.txt", o + "_corr.json"], False),
@@ -637,6 +679,19 @@ def run(bin_, root, memory, jobs_count, sanitized, timeout):
     for m in mutants + [eig]:
         out = os.path.join(work, os.path.basename(m) + ".csv")
         jobs.append(([bin_, "descriptors", base, "--type", "hks", "--load-eigenbasis", m, "--output", out, "--quiet"], os.path.basename(m), [out], False))
+    # shape model mutants through ssm sample and ssm report
+    sphere, e1, e2 = (os.path.join(work, f"ssm_{i}.off") for i in range(3))
+    for out, args in ((sphere, ["sphere"]), (e1, ["ellipsoid", "--axes", "1.3,0.9,0.7"]), (e2, ["ellipsoid", "--axes", "0.8,1.1,0.9"])):
+        subprocess.run([bin_, "generate"] + args + ["--subdivisions", "1", "--output", out, "--quiet"], check=True)
+    model = os.path.join(work, "base.ssm")
+    subprocess.run([bin_, "ssm", "build", sphere, e1, e2, "--output", model, "--quiet"], check=True)
+    model_mutants = shape_model_mutants(model, os.path.join(root + ".ssm"))
+    for m in model_mutants + [model]:
+        out = os.path.join(work, os.path.basename(m) + ".off")
+        jobs.append(([bin_, "ssm", "sample", m, "--coefficients", "1", "--output", out, "--quiet"], os.path.basename(m), [out], False))
+        jobs.append(([bin_, "ssm", "report", m, "--output", os.path.join(work, os.path.basename(m) + "_report"), "--samples", "10", "--modes", "1",
+                      "--quiet"], os.path.basename(m), [], False))
+    mutants += model_mutants
     # each job writes its own outputs: make them unique per job so parallel runs do not collide
     unique = []
     for i, (args, name, outs, js) in enumerate(jobs):
@@ -653,10 +708,10 @@ def run(bin_, root, memory, jobs_count, sanitized, timeout):
             if kind in ("fail", "signal", "timeout", "sanitizer", "memory"):
                 failures.append((kind, args, detail))
             for p in args:
-                if p.startswith(work) and os.path.isfile(p) and not p.endswith(".eig"):
+                if p.startswith(work) and os.path.isfile(p) and not p.endswith(".eig") and not p.endswith(".ssm"):
                     os.remove(p)
     corpus = len(files) + len(mutants)
-    print(f"fuzz corpus: {len(files)} mesh files + {len(mutants)} eigenbasis files = {corpus}; {len(unique)} runs in "
+    print(f"fuzz corpus: {len(files)} mesh files + {len(mutants)} eigenbasis and shape model files = {corpus}; {len(unique)} runs in "
           f"{time.monotonic() - t0:.0f} s; outcomes: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())) +
           f"; largest peak memory of a run {peak:.0f} MiB (cap {memory} MiB{' x 3 under sanitizers' if sanitized else ''})")
     for kind, args, detail in failures[:40]:

@@ -15,11 +15,16 @@ const Command& match_command();
 const Command& register_command();
 const Command& distance_command();
 const Command& correspond_command();
+const Command& fit_command();
+const Command& ssm_build_command();
+const Command& ssm_report_command();
+const Command& ssm_sample_command();
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {info_command(),   generate_command(),    geodesics_command(), sample_command(),
                                              agd_command(),    descriptors_command(), match_command(),     register_command(),
-                                             distance_command(), correspond_command()};
+                                             distance_command(), correspond_command(), fit_command(),
+                                             ssm_build_command(), ssm_report_command(), ssm_sample_command()};
   return table;
 }
 

@@ -8,6 +8,7 @@
 
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace {
 // The kind of a library error as printed after its message: the defect of bad input, else the
@@ -37,14 +38,26 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    // a command of two words ("ssm build"): the first word names a group of commands
+    const std::string second = argc > 2 ? argv[2] : "";
+    std::vector<std::string> group;
+    for(const Command& c : command_table())
+      if(c.name.rfind(first + " ", 0) == 0) group.push_back(c.name.substr(first.size() + 1));
     for(const Command& c : command_table()) {
-      if(c.name != first) continue;
-      const Args a = parse_arguments(c, argc, argv, 2);
+      const bool two_words = !group.empty();
+      if(c.name != (two_words ? first + " " + second : first)) continue;
+      const Args a = parse_arguments(c, argc, argv, two_words ? 3 : 2);
       if(a.has("help")) {
         std::cout << command_help(c);
         return 0;
       }
       return c.run(a);
+    }
+    if(!group.empty()) {
+      std::string list;
+      for(const std::string& g : group) list += (list.empty() ? "" : ", ") + g;
+      throw Usage_error(first + ": " + (second.empty() ? "missing" : "unknown") + " subcommand" + (second.empty() ? "" : " '" + second + "'") +
+                        " (one of: " + list + "; see shapecorr --help)");
     }
     throw Usage_error("unknown command '" + first + "' (see shapecorr --help)");
   } catch(const Usage_error& e) {

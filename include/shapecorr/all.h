@@ -16,4 +16,5 @@
 #include <shapecorr/descriptors.h>
 #include <shapecorr/registration.h>
 #include <shapecorr/evaluation.h>
+#include <shapecorr/shape_model.h>
 #endif

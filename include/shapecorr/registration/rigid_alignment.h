@@ -427,7 +427,7 @@ Rigid_alignment_report align_rigidly(const SourceMesh& source, const TargetMesh&
   const double angle = choose_parameter(get_parameter(np1, internal_np::maximum_normal_angle), CGAL_PI / 3);
   o.iterations = choose_parameter(get_parameter(np1, CGAL::internal_np::number_of_iterations), std::size_t(50));
   o.threads = choose_parameter(get_parameter(np1, internal_np::number_of_threads), 0u);
-  const std::size_t samples = choose_parameter(get_parameter(np1, internal_np::number_of_samples), std::size_t(10000));
+  const std::size_t samples = choose_parameter(get_parameter(np1, CGAL::internal_np::number_of_samples), std::size_t(10000));
   if(!(o.trimming > 0 && o.trimming <= 1)) throw Invalid_argument("align_rigidly: trimming_fraction must be in (0, 1]");
   if(!(angle > 0 && angle <= CGAL_PI)) throw Invalid_argument("align_rigidly: maximum_normal_angle must be in (0, pi]");
   if(o.iterations > 100000) throw Invalid_argument("align_rigidly: number_of_iterations above 100000");

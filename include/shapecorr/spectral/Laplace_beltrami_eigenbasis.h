@@ -6,6 +6,7 @@
 
 #include <shapecorr/exceptions.h>
 #include <shapecorr/parameters.h>
+#include <shapecorr/internal/binary_file.h>
 #include <shapecorr/spectral/Spectra_eigensolver.h>
 #include <shapecorr/operators/laplacian.h>
 
@@ -71,25 +72,15 @@ public:
   /// 64-bit FNV-1a checksum of everything before it.
   /// \throws Output_error when the file cannot be written
   void save(const std::string& path) const {
-    std::ofstream out(path, std::ios::binary);
-    if(!out) throw Output_error("eigenbasis: cannot write '" + path + "'");
+    internal::Checked_binary_writer out(path, magic(), "eigenbasis");
     const std::uint64_t n = number_of_vertices(), k = number_of_eigenpairs();
-    const std::uint32_t order = byte_order_mark;
-    std::uint64_t hash = fnv_offset;
-    auto put = [&](const void* data, std::uint64_t bytes) {
-      out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
-      hash = fnv1a(hash, data, bytes);
-    };
-    put(magic(), 8);
-    put(&order, sizeof order);
-    put(&n, sizeof n);
-    put(&k, sizeof k);
-    put(&m_scale, sizeof m_scale);
-    put(m_values.data(), sizeof(double) * k);
-    put(m_mass.data(), sizeof(double) * n);
-    put(m_vectors.data(), sizeof(double) * n * k);
-    out.write(reinterpret_cast<const char*>(&hash), sizeof hash);
-    if(!out) throw Output_error("eigenbasis: writing '" + path + "' failed");
+    out.put_u64(n);
+    out.put_u64(k);
+    out.put_double(m_scale);
+    out.put(m_values.data(), sizeof(double) * k);
+    out.put(m_mass.data(), sizeof(double) * n);
+    out.put(m_vectors.data(), sizeof(double) * n * k);
+    out.finish();
   }
 
   /// Reads a basis written by `save` and checks it: format version, byte order, sizes against the
@@ -98,75 +89,39 @@ public:
   /// masses finite and positive, operator scale finite and positive.
   /// \throws Invalid_input (`unreadable_file`) naming the file and the first problem found
   static Laplace_beltrami_eigenbasis load(const std::string& path) {
-    auto fail = [&](const std::string& why) -> void {
-      throw Invalid_input(Mesh_defect::unreadable_file, "eigenbasis: '" + path + "': " + why);
-    };
-    std::ifstream in(path, std::ios::binary);
-    if(!in) fail("cannot open the file");
-    in.seekg(0, std::ios::end);
-    const std::streamoff end = in.tellg();
-    if(end < 0) fail("cannot determine the file size (not a regular file?)");
-    const std::uint64_t size = static_cast<std::uint64_t>(end);
-    in.seekg(0);
-    const std::uint64_t header = 8 + 4 + 8 + 8 + 8, trailer = 8;
-    char head[8] = {0};
-    std::uint32_t order = 0;
-    std::uint64_t n = 0, k = 0;
-    double scale = 0;
-    in.read(head, 8);
-    if(!in || std::memcmp(head, "SCLBEIG", 7) != 0) fail("not a ShapeCorr eigenbasis file");
-    if(head[7] == '1') fail("format version 1 (no checksum), no longer read: compute the basis again and save it");
-    if(head[7] != magic()[7]) fail(std::string("format version '") + head[7] + "' (this build reads version 2)");
-    std::uint64_t hash = fnv1a(fnv_offset, head, 8);
-    auto get = [&](void* data, std::uint64_t bytes) {
-      in.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
-      if(!in) fail("truncated");
-      hash = fnv1a(hash, data, bytes);
-    };
-    if(size < header + trailer) fail("truncated: " + std::to_string(size) + " bytes, shorter than the header");
-    get(&order, sizeof order);
-    if(order != byte_order_mark) fail("written on a machine of the other byte order");
-    get(&n, sizeof n);
-    get(&k, sizeof k);
-    get(&scale, sizeof scale);
-    // sizes by division: n + k + n k doubles must fill exactly the bytes between header and trailer
-    const std::uint64_t doubles = (size - header - trailer) / sizeof(double);
-    const std::string counts = " (n = " + std::to_string(n) + " vertices, k = " + std::to_string(k) + " eigenpairs, " + std::to_string(size) + " bytes)";
-    if(n == 0 || k == 0 || k > n) fail("bad sizes" + counts + ": 1 <= k <= n is required");
-    if(n > doubles || k > doubles / n || n * k > doubles - n || k > doubles - n - n * k ||
-       header + trailer + sizeof(double) * (n + k + n * k) != size)
-      fail("the sizes disagree with the file size" + counts);
-    if(!(std::isfinite(scale) && scale > 0)) fail("operator scale " + std::to_string(scale) + " is not a positive number");
+    internal::Checked_binary_reader in(path, magic(), 7, "eigenbasis");
+    const std::string version = in.version(7);
+    if(version == "1") in.fail("format version 1 (no checksum), no longer read: compute the basis again and save it");
+    if(version != "2") in.fail("format version '" + version + "' (this build reads version 2)");
+    const std::uint64_t n = in.get_u64(), k = in.get_u64();
+    const double scale = in.get_double();
+    const std::string counts = " (n = " + std::to_string(n) + " vertices, k = " + std::to_string(k) + " eigenpairs)";
+    if(n == 0 || k == 0 || k > n) in.fail("bad sizes" + counts + ": 1 <= k <= n is required");
+    // n + k + n k doubles must fill exactly the bytes before the checksum
+    const std::uint64_t doubles = in.bytes_left() / sizeof(double);
+    if(in.bytes_left() % sizeof(double) != 0 || n > doubles || k > doubles / n || n * k > doubles - n || k != doubles - n - n * k)
+      in.fail("the sizes disagree with the file size" + counts);
+    if(!(std::isfinite(scale) && scale > 0)) in.fail("operator scale " + std::to_string(scale) + " is not a positive number");
     Eigen::VectorXd values(static_cast<Eigen::Index>(k)), mass(static_cast<Eigen::Index>(n));
     Eigen::MatrixXd vectors(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
-    get(values.data(), sizeof(double) * k);
-    get(mass.data(), sizeof(double) * n);
-    get(vectors.data(), sizeof(double) * n * k);
-    std::uint64_t stored = 0;
-    in.read(reinterpret_cast<char*>(&stored), sizeof stored);
-    if(!in) fail("truncated");
-    if(stored != hash) fail("checksum mismatch (the file is corrupt)");
+    in.get(values.data(), sizeof(double) * k);
+    in.get(mass.data(), sizeof(double) * n);
+    in.get(vectors.data(), sizeof(double) * n * k);
+    in.finish();
     for(Eigen::Index i = 0; i < values.size(); ++i) {
       const double v = values[i];
-      if(!std::isfinite(v)) fail("eigenvalue " + std::to_string(i) + " is not finite");
-      if(v < -1e-8 * scale) fail("eigenvalue " + std::to_string(i) + " = " + std::to_string(v) + " is negative");
-      if(i > 0 && v < values[i - 1]) fail("eigenvalues not ascending at " + std::to_string(i));
+      if(!std::isfinite(v)) in.fail("eigenvalue " + std::to_string(i) + " is not finite");
+      if(v < -1e-8 * scale) in.fail("eigenvalue " + std::to_string(i) + " = " + std::to_string(v) + " is negative");
+      if(i > 0 && v < values[i - 1]) in.fail("eigenvalues not ascending at " + std::to_string(i));
     }
     for(Eigen::Index i = 0; i < mass.size(); ++i)
-      if(!(std::isfinite(mass[i]) && mass[i] > 0)) fail("mass of vertex " + std::to_string(i) + " is not a positive number");
-    if(!vectors.allFinite()) fail("an eigenvector has a non-finite entry");
+      if(!(std::isfinite(mass[i]) && mass[i] > 0)) in.fail("mass of vertex " + std::to_string(i) + " is not a positive number");
+    if(!vectors.allFinite()) in.fail("an eigenvector has a non-finite entry");
     return Laplace_beltrami_eigenbasis(std::move(values), std::move(vectors), std::move(mass), scale);
   }
 
 private:
   static const char* magic() { return "SCLBEIG2"; }
-  static constexpr std::uint32_t byte_order_mark = 0x01020304u;
-  static constexpr std::uint64_t fnv_offset = 14695981039346656037ull;
-  static std::uint64_t fnv1a(std::uint64_t h, const void* data, std::uint64_t bytes) {
-    const unsigned char* p = static_cast<const unsigned char*>(data);
-    for(std::uint64_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
-    return h;
-  }
   Eigen::VectorXd m_values;
   Eigen::MatrixXd m_vectors;
   Eigen::VectorXd m_mass;
