@@ -71,8 +71,9 @@ inline Principal_components principal_components(const Eigen::MatrixXd& centered
   Eigen::Index k = 0;
   if(method == Pca_method::GRAM_MATRIX) {
     // G = DᵀD/(N − 1) (one matrix product), its eigenpairs (λ, u); the mode of u is D u/√((N − 1) λ)
-    Eigen::MatrixXd G(N, N);
-    G.noalias() = (norm * norm) * (centered.transpose() * centered);
+    // the lower triangle only (a symmetric rank update: half the products); the solver reads no more
+    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(N, N);
+    G.selfadjointView<Eigen::Lower>().rankUpdate(centered.transpose(), norm * norm);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(G);
     if(es.info() != Eigen::Success) throw Solver_failure("principal components: the eigensolver of the Gram matrix failed");
     const Eigen::VectorXd all = es.eigenvalues().reverse();
