@@ -33,6 +33,8 @@ namespace {
 
 nlohmann::json distance_json(const shapecorr::Surface_distance& d) { return {{"l1", d.l1}, {"l2", d.l2}, {"lmax", d.lmax}}; }
 
+shapecorr::Statistical_shape_model load_model(const std::string& path);
+
 // ---- fit --------------------------------------------------------------------------------------
 
 struct Fit_job {
@@ -108,8 +110,18 @@ std::string fit_one(const Args& a, const Mesh& tmpl, const Landmarks& template_l
   return line.str();
 }
 
+// The template: a mesh, or the mean shape of a model (.ssm, .h5) with its connectivity.
+Mesh read_template(const Args& a) {
+  const std::string ext = extension(a.positional[0]);
+  if(ext != "ssm" && ext != "h5") return read_mesh(a, 0);
+  Mesh m;
+  const shapecorr::Statistical_shape_model model = load_model(a.positional[0]);
+  shapecorr::make_shape_mesh(model, model.mean(), m);
+  return m;
+}
+
 int run_fit(const Args& a) {
-  const Mesh tmpl = read_mesh(a, 0);
+  const Mesh tmpl = read_template(a);
   const std::size_t count = a.positional.size() - 1;
   if(a.has("output") == a.has("output-dir")) throw Usage_error("fit: give --output FILE (one specimen) or --output-dir DIR (one or more)");
   if(a.has("output") && count != 1) throw Usage_error("fit: --output takes one specimen; for " + std::to_string(count) + " use --output-dir DIR");
@@ -381,7 +393,8 @@ const Command& fit_command() {
   static const Command c{
       "fit",
       "fit TEMPLATE SPECIMEN... (--output FITTED.ply | --output-dir DIR) [--landmarks T S | --template-landmarks T] [--report R.json] [options]",
-      "Fits TEMPLATE to each SPECIMEN (thesis chapter 6): a rigid alignment (principal axes and ICP, or landmark pairs), then NICPS. "
+      "Fits TEMPLATE (a mesh, or a shape model, .ssm or .h5, whose mean shape is the template) to each SPECIMEN (thesis chapter 6): "
+      "a rigid alignment (principal axes and ICP, or landmark pairs), then NICPS. "
       "The fitted template keeps TEMPLATE's vertices and faces, so the fits of one template are in correspondence: the input of "
       "'shapecorr ssm build'. One specimen: --output FILE (.ply, .off, .obj, .stl) and --report FILE.json. Several: --output-dir DIR "
       "gets NAME.ply and NAME.json per specimen, fits run in parallel (--threads). Reports: the rigid transform, the surface distances "
