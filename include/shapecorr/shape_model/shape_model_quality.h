@@ -119,8 +119,19 @@ Shape_model_curve shape_model_generalization(const Statistical_shape_model& mode
     for(std::size_t j = 0; j < N; ++j)
       if(j != left_out) others.push_back(shapes[j]);
     const Statistical_shape_model loo = build_statistical_shape_model(others, model.triangles(), model.with_scale());
-    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(shapes[left_out].data(), n3);
-    for(std::size_t m = 1; m <= modes; ++m) errors[left_out][m - 1] = internal::mean_vertex_distance(loo.reconstruct(x, m), x);
+    // projected once; the reconstruction with m modes grows by one mode at a time, in the model's
+    // frame, and the left-out shape is moved there once (the same as reconstruct(x, m), moved back)
+    const Eigen::Map<const Eigen::Matrix3Xd> X(shapes[left_out].data(), 3, n3 / 3);
+    const Shape_model_projection p = loo.project(Eigen::Map<const Eigen::VectorXd>(shapes[left_out].data(), n3));
+    const Eigen::Matrix3Xd aligned = internal::transformed(p.to_model, X);
+    const Eigen::Map<const Eigen::VectorXd> x(aligned.data(), n3);
+    // distances in the model's frame scale by the alignment's scale: divide it out (1 without scale)
+    Eigen::VectorXd y = loo.mean();
+    for(std::size_t m = 1; m <= modes; ++m) {
+      const Eigen::Index i = static_cast<Eigen::Index>(m - 1);
+      if(i < loo.variances().size()) y += (p.coefficients[i] * std::sqrt(loo.variances()[i])) * loo.modes().col(i); // (fewer modes: as many as there are)
+      errors[left_out][m - 1] = internal::mean_vertex_distance(y, x) / p.to_model.scale;
+    }
     if(progress) {
       std::lock_guard<std::mutex> lock(report);
       progress(++done, N);
@@ -164,8 +175,10 @@ Shape_model_curve shape_model_specificity(const Statistical_shape_model& model, 
     for(Eigen::Index i = 0; i < coefficients.rows(); ++i) coefficients(i, s) = normal(random);
   std::vector<std::vector<double>> distances(K, std::vector<double>(k, 0.0));
   parallel_for(K, threads, [&](std::size_t s, unsigned) {
+    Eigen::VectorXd x = model.mean(); // the instance with m modes, one mode added at a time
     for(std::size_t m = 1; m <= k; ++m) {
-      const Eigen::VectorXd x = model.instance(coefficients.col(static_cast<Eigen::Index>(s)).head(static_cast<Eigen::Index>(m)));
+      const Eigen::Index i = static_cast<Eigen::Index>(m - 1);
+      x += (coefficients(i, static_cast<Eigen::Index>(s)) * std::sqrt(model.variances()[i])) * model.modes().col(i);
       double nearest = std::numeric_limits<double>::infinity();
       for(const auto& t : training) nearest = std::min(nearest, internal::mean_vertex_distance(x, t));
       distances[s][m - 1] = nearest;
