@@ -11,8 +11,10 @@
 // and gets only those it lacks (runs resume; another trim can be added later);
 // experiments/isometric_summary.py makes the tables and figures.
 // usage: evaluate_isometric [--data DIR] [--output DIR] [--cases tosca,camel,lion,cut] [--trims gsc,wks,isc]
-//        [--extra-trims-every N] [--part I/N] [--limit N] [--truth-points 1000] [--pyfm SCRIPT|none]
-//        [--peers DIR] [--python PY] [--threads T]
+//        [--extra-trims-every N] [--part I/N] [--limit N] [--every N] [--truth-points 1000] [--pyfm SCRIPT|none]
+//        [--pyfm-variants plain,oriented] [--peers DIR] [--python PY] [--threads T]
+// pyFM runs twice: "pyfm" without its orientation term, "pyfm-oriented" with w_orient = 1 (what
+// its authors recommend for direct maps).
 #include "program.h"
 #include "shapes.h"
 
@@ -167,7 +169,8 @@ json errors_json(const Method_result& r) {
 struct Options {
   std::string data = SHAPECORR_EVAL_DATA_DIR, out = "experiments/results/isometric", cases = "tosca,camel,lion,cut", trims = "gsc,wks,isc";
   std::string pyfm = SHAPECORR_EXPERIMENTS_DIR "/pyfm_map.py", peers, python = "/usr/bin/python3";
-  std::size_t extra_every = 1, part = 0, parts = 1, limit = 0, truth_points = 1000;
+  std::string pyfm_variants = "plain,oriented"; // plain: w_orient 0 ("pyfm"); oriented: w_orient 1 ("pyfm-oriented")
+  std::size_t extra_every = 1, every = 1, part = 0, parts = 1, limit = 0, truth_points = 1000, eigenpairs = 60;
   unsigned threads = 0;
 };
 
@@ -180,8 +183,11 @@ void run_case(const Case& c, const Options& o) {
   std::vector<std::string> trims;
   for(const std::string& t : split(o.trims, ','))
     if(missing("ours-" + t)) trims.push_back(t);
-  const bool run_pyfm = o.pyfm != "none" && missing("pyfm");
-  if(trims.empty() && !run_pyfm) {
+  std::vector<std::string> pyfm_runs; // the pyFM variants this case lacks
+  if(o.pyfm != "none")
+    for(const std::string& v : split(o.pyfm_variants, ','))
+      if(missing(v == "oriented" ? "pyfm-oriented" : "pyfm")) pyfm_runs.push_back(v);
+  if(trims.empty() && pyfm_runs.empty()) {
     std::cerr << c.name << ": done before (" << path << ")\n";
     return;
   }
@@ -228,7 +234,7 @@ void run_case(const Case& c, const Options& o) {
     const Main_component src(c.source.mesh);
     const Main_component& tgt = target_main;
     shapecorr::Isometric_correspondence<Mesh> method(src.shape.mesh, tgt.shape.mesh,
-                                                     SP::trim_descriptor(t).number_of_threads(o.threads).number_of_eigenpairs(c.kind == "cut" ? 0 : 60));
+                                                     SP::trim_descriptor(t).number_of_threads(o.threads).number_of_eigenpairs(c.kind == "cut" ? 0 : o.eigenpairs));
     shapecorr::Isometric_correspondence_report report = method.run();
     std::vector<std::size_t> dense(ns);
     for(std::size_t v = 0; v < ns; ++v) dense[v] = tgt.shape.original[method.dense_map()[src.main_of[v]]];
@@ -238,6 +244,8 @@ void run_case(const Case& c, const Options& o) {
         for(auto& m : snapshot) m = {src.shape.original[m.source], tgt.shape.original[m.target], m.level};
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     j["methods"]["ours-" + trim]["components"] = {src.components, tgt.components};
+    const json orientation = {{"score", report.orientation_score}, {"dense", report.dense_orientation},
+                              {"met", report.levels.empty() ? false : report.levels[0].orientation_met}};
     dense_errors(dense, r);
     // sparse matches and the snapshots of local optimization: one list of (truth, found) pairs
     std::vector<std::size_t> truth, mirror, found;
@@ -293,13 +301,15 @@ void run_case(const Case& c, const Options& o) {
     j["methods"]["ours-" + trim] = errors_json(r);
     j["methods"]["ours-" + trim]["components"] = components;
     j["methods"]["ours-" + trim]["dense_seconds"] = report.dense_seconds;
+    j["methods"]["ours-" + trim]["orientation"] = orientation;
     const auto& d = j["methods"]["ours-" + trim];
     std::cerr << c.name << " ours-" << trim << ": dense mean " << d["dense_direct"]["mean"].get<double>() << " direct, "
               << d["dense_symmetric"]["mean"].get<double>() << " symmetric (" << 100 * d["dense_symmetric"]["within_0.25"].get<double>()
-              << " % < 0.25), " << r.seconds << " s\n";
+              << " % < 0.25), " << r.seconds << " s, orientation " << report.orientation_score << " (dense " << report.dense_orientation << ")\n";
   }
-  // pyFM, as a separate process on the same files
-  if(run_pyfm) {
+  // pyFM, as a separate process on the same files: without and with its orientation term
+  for(const std::string& variant : pyfm_runs) {
+    const std::string method = variant == "oriented" ? "pyfm-oriented" : "pyfm", w_orient = variant == "oriented" ? "1" : "0";
     std::string source_file = c.source_file;
     if(source_file.empty()) { // a cut source: written for pyFM
       source_file = o.out + "/work/" + c.name + "_source.off";
@@ -315,12 +325,13 @@ void run_case(const Case& c, const Options& o) {
       }
       if(!off) throw std::runtime_error("cannot write " + source_file);
     }
-    const std::string map_file = o.out + "/work/" + c.name + "_pyfm.txt", log = o.out + "/work/" + c.name + "_pyfm.log";
-    const std::string cmd = "'" + o.python + "' '" + o.pyfm + "' '" + o.peers + "' '" + source_file + "' '" + c.target_file + "' '" + map_file + "' > '" + log + "' 2>&1";
+    const std::string map_file = o.out + "/work/" + c.name + "_" + method + ".txt", log = o.out + "/work/" + c.name + "_" + method + ".log";
+    const std::string cmd = "'" + o.python + "' '" + o.pyfm + "' '" + o.peers + "' '" + source_file + "' '" + c.target_file + "' '" + map_file + "' " +
+                            w_orient + " > '" + log + "' 2>&1";
     Method_result r;
     if(std::system(cmd.c_str()) != 0) {
-      std::cerr << c.name << " pyFM failed (see " << log << ")\n";
-      j["methods"]["pyfm"] = {{"failed", true}};
+      std::cerr << c.name << " " << method << " failed (see " << log << ")\n";
+      j["methods"][method] = {{"failed", true}};
     } else {
       std::ifstream in(log);
       std::string word;
@@ -333,9 +344,10 @@ void run_case(const Case& c, const Options& o) {
       for(std::size_t s = 0; s < ns; ++s)
         if(map[s] >= c.target.number_of_vertices()) throw std::runtime_error(map_file + ": a target vertex out of range");
       dense_errors(map, r);
-      j["methods"]["pyfm"] = errors_json(r);
-      const auto& d = j["methods"]["pyfm"];
-      std::cerr << c.name << " pyFM: dense mean " << d["dense_direct"]["mean"].get<double>() << " direct, " << d["dense_symmetric"]["mean"].get<double>()
+      j["methods"][method] = errors_json(r);
+      j["methods"][method]["w_orient"] = std::stod(w_orient);
+      const auto& d = j["methods"][method];
+      std::cerr << c.name << " " << method << ": dense mean " << d["dense_direct"]["mean"].get<double>() << " direct, " << d["dense_symmetric"]["mean"].get<double>()
                 << " symmetric (" << 100 * d["dense_symmetric"]["within_0.25"].get<double>() << " % < 0.25), " << r.seconds << " s\n";
     }
   }
@@ -352,7 +364,8 @@ int main(int argc, char** argv) {
   o.peers = o.data + "/../peers";
   const int code = eval::parse_options(argc, argv, "evaluate_isometric",
       "[--data DIR] [--output DIR] [--cases tosca,camel,lion,cut] [--trims gsc,wks,isc] [--extra-trims-every N]\n"
-      "       [--part I/N] [--limit N] [--truth-points N] [--pyfm SCRIPT|none] [--peers DIR] [--python PY] [--threads T]",
+      "       [--part I/N] [--limit N] [--every N] [--truth-points N] [--pyfm SCRIPT|none] [--pyfm-variants plain,oriented] [--eigenpairs K]\n"
+      "       [--peers DIR] [--python PY] [--threads T]",
       [&](const std::string& k, const std::string& v) {
         if(k == "--data") o.data = v;
         else if(k == "--output") o.out = v;
@@ -367,6 +380,9 @@ int main(int argc, char** argv) {
         } else if(k == "--limit") o.limit = std::stoul(v);
         else if(k == "--truth-points") o.truth_points = std::stoul(v);
         else if(k == "--pyfm") o.pyfm = v;
+        else if(k == "--pyfm-variants") o.pyfm_variants = v;
+        else if(k == "--every") o.every = std::stoul(v);
+        else if(k == "--eigenpairs") o.eigenpairs = std::stoul(v);
         else if(k == "--peers") o.peers = v;
         else if(k == "--python") o.python = v;
         else if(k == "--threads") o.threads = static_cast<unsigned>(std::stoul(v));
@@ -376,7 +392,8 @@ int main(int argc, char** argv) {
   if(code >= 0) return code;
   try {
     if(!eval::has_evaluation_data("evaluate_isometric", o.data)) return 1;
-    if(o.parts == 0 || o.part >= o.parts || o.truth_points == 0 || o.extra_every == 0) throw std::runtime_error("bad --part, --truth-points or --extra-trims-every");
+    if(o.parts == 0 || o.part >= o.parts || o.truth_points == 0 || o.extra_every == 0 || o.every == 0)
+      throw std::runtime_error("bad --part, --truth-points, --every or --extra-trims-every");
     std::system(("mkdir -p '" + o.out + "/cases' '" + o.out + "/work'").c_str());
     const std::string tosca = o.data + "/tosca5k/", camel = o.data + "/camel_gallop/";
     // the list of cases (built lazily: a case's meshes are read when it runs)
@@ -394,7 +411,8 @@ int main(int argc, char** argv) {
       while(in >> a >> b) pairs.emplace_back(a, b);
     }
     if(wanted("tosca"))
-      for(std::size_t i = 0; i < pairs.size() && (o.limit == 0 || i < o.limit); ++i) entries.push_back({"tosca", pairs[i].first, pairs[i].second, i});
+      for(std::size_t i = 0; i < pairs.size() && (o.limit == 0 || i < o.limit); ++i)
+        if(i % o.every == 0) entries.push_back({"tosca", pairs[i].first, pairs[i].second, i});
     if(wanted("camel"))
       for(const char* m : {"1_to_3", "1_to_5", "1_to_7", "2_to_4", "2_to_10", "3_to_1", "10_to_8"}) {
         const auto ij = split(std::string(m), '_');

@@ -585,13 +585,16 @@ def mesh_jobs(bin_, path, work, base):
         ([bin_, "fit", base, path, "--iterations", "2", "--output", o + "_fit.off", "--report", o + "_fit.json"] + q, name,
          [o + "_fit.off", o + "_fit.json"], False),
         ([bin_, "ssm", "build", path, path, "--output", o + ".ssm"] + q, name, [], False),
-        # near-isometric correspondence from the file to the base mesh (small: one start, one level)
+        # near-isometric correspondence from the file to the base mesh (small: one start, one level;
+        # each orientation in turn)
         ([bin_, "correspond", path, base, "--features", "4", "--levels", "1", "--per-level", "4", "--starts", "1", "--eigenpairs", "8",
+          "--orientation", ORIENTATIONS[sum(name.encode()) % len(ORIENTATIONS)],
           "--output", o + "_corr.txt", "--report", o + "_corr.json"] + q, name, [o + "_corr.txt", o + "_corr.json"], False),
     ]
 
 
 BASELINES = ["andresen", "pauly", "cpd", "gmm-l2"]
+ORIENTATIONS = ["preserving", "reversing", "any"]
 
 
 def parameter_jobs(bin_, base, flat, work):
@@ -603,6 +606,7 @@ def parameter_jobs(bin_, base, flat, work):
     per_command = {
         "generate": (["generate", "sphere", "--output", o + ".off"], ["--subdivisions"], []),
         "generate-creature": (["generate", "creature", "--subdivisions", "1", "--output", o + ".off"], [], ["--bend", "--limb-scale"]),
+        "generate-animal": (["generate", "animal", "--subdivisions", "1", "--output", o + ".off"], ["--turn"], []),
         "geodesics": (["geodesics", base, "--source", "0", "--output", o + ".csv"], [], []),
         "sample": (["sample", base, "--count", "3"], ["--count", "--seed"], []),
         "agd": (["agd", base, "--output", o + ".csv"], ["--sources"], ["--radius"]),

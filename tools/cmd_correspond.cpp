@@ -10,6 +10,11 @@
 #include <shapecorr/registration/isometric_correspondence.h>
 
 
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <boost/tuple/tuple.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -34,6 +39,22 @@ void check_truth(const Mesh& source, const Mesh& target, const std::vector<std::
       throw shapecorr::Invalid_argument("correspond: --truth pair " + std::to_string(k + 1) + " names a vertex the mesh does not have");
 }
 
+// For each vertex of `from`, the nearest vertex of `to` (a k-d tree of `to`'s points).
+std::vector<std::size_t> nearest_vertices(const Mesh& from, const Mesh& to) {
+  typedef boost::tuple<K::Point_3, std::size_t> Indexed;
+  typedef CGAL::Search_traits_adapter<Indexed, CGAL::Nth_of_tuple_property_map<0, Indexed>, CGAL::Search_traits_3<K>> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  std::vector<Indexed> points;
+  for(auto v : to.vertices()) points.emplace_back(to.point(v), std::size_t(v.idx()));
+  typename Search::Tree tree(points.begin(), points.end());
+  std::vector<std::size_t> out;
+  for(auto v : from.vertices()) {
+    Search search(tree, from.point(v), 1);
+    out.push_back(boost::get<1>(search.begin()->first));
+  }
+  return out;
+}
+
 int run_correspond(const Args& a) {
   const Mesh source = read_mesh(a, 0);
   const Mesh target = read_mesh(a, 1);
@@ -41,6 +62,9 @@ int run_correspond(const Args& a) {
   const std::string solver = a.get("solver", "bb"), trim = a.get("trim", "gsc");
   if(solver != "bb" && solver != "mip") throw Usage_error("correspond: --solver must be bb (branch and bound) or mip (GLPK)");
   if(trim != "gsc" && trim != "wks" && trim != "isc") throw Usage_error("correspond: --trim must be gsc, wks or isc");
+  const std::string orientation = a.get("orientation", "preserving");
+  if(orientation != "preserving" && orientation != "reversing" && orientation != "any")
+    throw Usage_error("correspond: --orientation must be preserving, reversing or any");
   if(a.has("colors") && a.get("colors").empty()) throw Usage_error("correspond: --colors needs a file prefix");
   if(a.has("lines") && extension(a.get("lines")) != "obj" && extension(a.get("lines")) != "ply")
     throw Usage_error("correspond: --lines must end in .obj or .ply");
@@ -60,8 +84,19 @@ int run_correspond(const Args& a) {
                       .trim_descriptor(trim == "gsc"   ? shapecorr::Trim_descriptor::GEODESIC_SPIN_CONTOUR
                                        : trim == "wks" ? shapecorr::Trim_descriptor::WAVE_KERNEL_SIGNATURE
                                                        : shapecorr::Trim_descriptor::INTRINSIC_SHAPE_CONTEXT)
+                      .orientation(orientation == "preserving"  ? shapecorr::Map_orientation::PRESERVING
+                                   : orientation == "reversing" ? shapecorr::Map_orientation::REVERSING
+                                                                : shapecorr::Map_orientation::ANY)
                       .progress_callback(progress);
   std::vector<std::size_t> truth_source, truth_target;
+  if(a.has("truth") && a.has("truth-nearest")) throw Usage_error("correspond: --truth and --truth-nearest exclude each other");
+  if(a.has("truth-nearest")) { // the same surface in the same place: each source vertex's truth is the nearest target vertex
+    const std::vector<std::size_t> near = nearest_vertices(source, target);
+    for(std::size_t s = 0; s < near.size(); ++s) {
+      truth_source.push_back(s);
+      truth_target.push_back(near[s]);
+    }
+  }
   if(a.has("truth")) { // read before the work: a bad file fails at once
     truth_source = shapecorr::read_vts(a.values("truth")[0]);
     truth_target = shapecorr::read_vts(a.values("truth")[1]);
@@ -110,7 +145,7 @@ int run_correspond(const Args& a) {
   // the geodesic error at the truth's pairs, divided by sqrt(area); with --symmetric also of the
   // mirror images of the truth's source points (the flipped map)
   shapecorr::Map_error_summary te, mirrored;
-  if(a.has("truth")) {
+  if(!truth_source.empty()) {
     std::vector<std::vector<std::size_t>> found(a.has("symmetric") ? 2 : 1);
     for(std::size_t k = 0; k < truth_source.size(); ++k) {
       found[0].push_back(dense[truth_source[k]]);
@@ -127,6 +162,10 @@ int run_correspond(const Args& a) {
     j["starts"] = report.starts;
     j["chosen_seed"] = report.chosen_seed;
     j["sparse_matches"] = report.matches.size();
+    j["orientation"] = {{"requested", orientation},
+                        {"returned", report.orientation == shapecorr::Map_orientation::PRESERVING ? "preserving" : "reversing"},
+                        {"score", report.orientation_score},
+                        {"coarse_met", report.levels.empty() ? false : report.levels[0].orientation_met}};
     nlohmann::json levels = nlohmann::json::array();
     for(const auto& l : report.levels)
       levels.push_back({{"level", l.level},
@@ -144,15 +183,16 @@ int run_correspond(const Args& a) {
     j["descriptor_seconds"] = report.descriptor_seconds;
     j["dense_seconds"] = report.dense_seconds;
     j["seconds"] = secs;
-    if(a.has("truth")) j["truth"] = to_json(te);
+    if(!truth_source.empty()) j["truth"] = to_json(te);
     if(a.has("symmetric")) j["truth_symmetric"] = to_json(mirrored);
     std::ofstream out = open_output(a.get("report"));
     out << j.dump(2) << "\n";
   }
   if(show) {
     std::cerr << "correspond: " << report.matches.size() << " sparse matches over " << report.levels.size() << " levels (start " << report.chosen_seed
-              << " of " << report.starts << " tried), dense map of " << dense.size() << " vertices";
-    if(a.has("truth"))
+              << " of " << report.starts << " tried), dense map of " << dense.size() << " vertices, orientation-"
+              << (report.orientation == shapecorr::Map_orientation::PRESERVING ? "preserving" : "reversing") << " (agreement " << report.orientation_score << ")";
+    if(!truth_source.empty())
       std::cerr << "; geodesic error / sqrt(area) over " << te.pairs << " pairs: mean " << te.mean << ", largest " << te.largest << ", "
                 << 100 * te.fraction_within << " % within 0.25";
     if(a.has("symmetric"))
@@ -168,10 +208,11 @@ int run_correspond(const Args& a) {
 const Command& correspond_command() {
   static const Command c{
       "correspond",
-      "correspond SOURCE TARGET --output MAP.txt [--features N] [--levels L] [--sparse FILE] [--lines FILE] [--colors PREFIX] [--truth S.vts T.vts [--symmetric S.sym.vts]] [--report FILE.json]",
+      "correspond SOURCE TARGET --output MAP.txt [--features N] [--levels L] [--sparse FILE] [--lines FILE] [--colors PREFIX] [--orientation preserving|reversing|any] [--truth S.vts T.vts [--symmetric S.sym.vts] | --truth-nearest] [--report FILE.json]",
       "Fully automatic correspondence of two near-isometric shapes (thesis chapter 5): furthest-point features, "
       "candidate pairs by Geodesic Spin Contour (or WKS), the coarse program that keeps geodesic distances (branch and "
-      "bound, or GLPK), local optimization, refinement levels, then a dense map. SOURCE and TARGET must be one connected "
+      "bound, or GLPK) among matchings of the orientation asked for (direct by default), local optimization, refinement "
+      "levels, then a dense map; the summary line says the map's orientation and its agreement in [-1, 1]. SOURCE and TARGET must be one connected "
       "component each. Writes MAP.txt: after '#' comments, line i is the target vertex (0-based) of source vertex i. "
       "With --truth (TOSCA .vts files of SOURCE and TARGET, 1-based, paired by line), prints the geodesic error on TARGET "
       "divided by sqrt(area) (with --symmetric also against the mirrored truth: a symmetric shape has two right maps). "
@@ -186,10 +227,12 @@ const Command& correspond_command() {
                                  {"trim", "gsc|wks|isc", "descriptor of the candidate pairs (default gsc)"},
                                  {"eigenpairs", "K", "largest spectral basis of the dense map's upsampling; 0: geodesic coordinates only (default 60)"},
                                  {"seed", "S", "seed of the first sampled vertex (default 0)"},
+                                 {"orientation", "preserving|reversing|any", "the map's orientation: direct (default), the mirror map, or whichever distorts least"},
                                  {"sparse", "FILE", "the sparse matches: 'source target level' per line"},
                                  {"lines", "FILE.obj|.ply", "both shapes side by side with a line per sparse match (MeshLab)"},
                                  {"colors", "PREFIX", "PREFIX_target.ply coloured by the distance from a matched feature, PREFIX_source.ply by the same values through the map (matched features red)"},
                                  {"truth", "S.vts T.vts", "ground-truth vertex lists of SOURCE and TARGET (1-based, paired by line): report the geodesic error"},
+                                 {"truth-nearest", "", "SOURCE and TARGET are the same surface in the same place (another triangulation): the truth of a source vertex is the nearest target vertex"},
                                  {"symmetric", "S.sym.vts", "with --truth: the mirror image of each truth source vertex (TOSCA .sym.vts): also the error against the mirrored truth"},
                                  {"report", "FILE.json", "levels (features, candidates, objective, energies, times), starts, the truth error"}}),
       2, 2, run_correspond};

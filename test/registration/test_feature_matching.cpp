@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <random>
 
@@ -52,12 +54,18 @@ Coarse_matching_problem random_problem(std::mt19937& rng, std::size_t n, std::si
   return p;
 }
 
-// Every one-to-one choice of number_of_matches candidates (small problems only).
-double exhaustive_minimum(const Coarse_matching_problem& p) {
+// Every one-to-one choice of number_of_matches candidates (small problems only); with `accept`,
+// only the choices it accepts.
+double exhaustive_minimum(const Coarse_matching_problem& p, const shapecorr::Matching_acceptance& accept = {}) {
   double best = std::numeric_limits<double>::infinity();
   std::vector<Feature_pair> chosen;
   std::function<void(std::size_t)> go = [&](std::size_t c) {
-    if(chosen.size() == p.number_of_matches) { best = std::min(best, p.objective(chosen)); return; }
+    if(chosen.size() == p.number_of_matches) {
+      std::vector<Feature_pair> sorted = chosen;
+      std::sort(sorted.begin(), sorted.end());
+      if(!accept || accept(sorted)) best = std::min(best, p.objective(chosen));
+      return;
+    }
     if(c == p.candidates.size()) return;
     const Feature_pair& f = p.candidates[c];
     bool free = true;
@@ -97,6 +105,43 @@ TEST_CASE("coarse matching: branch and bound equals exhaustive enumeration", "[f
     CHECK(r.optimal);
     CHECK(r.objective == Approx(exhaustive_minimum(p)).margin(1e-12));
   }
+}
+
+TEST_CASE("coarse matching: an acceptance test (branch and bound) and cuts (GLPK) give the best accepted matching", "[feature_matching]") {
+  // the test rejects the two best matchings (found first without it): the answer is the third,
+  // as exhaustive enumeration of the accepted ones says
+  std::mt19937 rng(5);
+  int compared = 0;
+  for(int trial = 0; trial < 20; ++trial) {
+    const Coarse_matching_problem p = random_problem(rng, 6, 7, 4, 0.05);
+    if(!shapecorr::is_feasible(p)) continue;
+    const Feature_matching first = shapecorr::solve_coarse_matching_branch_and_bound(p);
+    const Feature_matching second =
+        shapecorr::solve_coarse_matching_branch_and_bound(p, 50'000'000, [&](const std::vector<Feature_pair>& m) { return m != first.pairs; });
+    if(!second.accepted) continue; // a single matching exists
+    const shapecorr::Matching_acceptance accept = [&](const std::vector<Feature_pair>& m) { return m != first.pairs && m != second.pairs; };
+    const double expected = exhaustive_minimum(p, accept);
+    if(!std::isfinite(expected)) continue;
+    const Feature_matching third = shapecorr::solve_coarse_matching_branch_and_bound(p, 50'000'000, accept);
+    check_one_to_one(p, third);
+    CHECK(third.accepted);
+    CHECK(third.optimal);
+    CHECK(third.objective == Approx(expected).margin(1e-12));
+    CHECK(third.objective >= second.objective - 1e-12);
+    CGAL::GLPK_mixed_integer_program_traits<double> glpk;
+    const Feature_matching mip = shapecorr::solve_coarse_matching_mip(p, glpk, {first.pairs, second.pairs});
+    check_one_to_one(p, mip);
+    CHECK(mip.objective == Approx(expected).margin(1e-7));
+    ++compared;
+  }
+  CHECK(compared >= 10);
+  // nothing accepted: the best rejected matching, flagged
+  std::mt19937 rng2(9);
+  const Coarse_matching_problem p = random_problem(rng2, 6, 7, 4, 0.05);
+  REQUIRE(shapecorr::is_feasible(p));
+  const Feature_matching none = shapecorr::solve_coarse_matching_branch_and_bound(p, 50'000'000, [](const std::vector<Feature_pair>&) { return false; });
+  CHECK(!none.accepted);
+  CHECK(none.objective == Approx(exhaustive_minimum(p)).margin(1e-12));
 }
 
 TEST_CASE("coarse matching: branch and bound and GLPK agree on random 10-feature instances", "[feature_matching]") {

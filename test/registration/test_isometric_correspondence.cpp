@@ -406,3 +406,169 @@ TEST_CASE("isometric correspondence: a partial shape (a limb cut off, a boundary
     for(std::size_t t : method.dense_map()) CHECK(t < num_vertices(target));
   }
 }
+
+namespace {
+
+// shapecorr::make_animal, bilaterally symmetric (mirror plane y = 0): its mirror image is an
+// isometry that reverses the orientation
+Soup animal(int subdivisions) {
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> m;
+  shapecorr::make_animal(m, subdivisions);
+  return soup_of(m);
+}
+
+// a proper rigid motion: a rotation about (1, 2, 3) by 50 degrees and a shift
+std::array<double, 3> moved(const std::array<double, 3>& p) {
+  const Eigen::Vector3d x = Eigen::AngleAxisd(0.87, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::Vector3d(p[0], p[1], p[2]) + Eigen::Vector3d(2, -1, 0.5);
+  return {x.x(), x.y(), x.z()};
+}
+
+// The mean distance, in mean edge lengths of `a`, from where the map sends each source vertex to
+// where it should: `expected[v]` (a source vertex), the target being `a` moved and renumbered by
+// `perm` (so a target vertex is the source vertex perm^-1 of it).
+double mean_map_error(const Soup& a, const std::vector<std::size_t>& perm, const std::vector<std::size_t>& map, const std::vector<std::size_t>& expected) {
+  std::vector<std::size_t> inverse(perm.size());
+  for(std::size_t i = 0; i < perm.size(); ++i) inverse[perm[i]] = i;
+  double sum = 0;
+  for(std::size_t v = 0; v < map.size(); ++v) {
+    const auto &p = a.points[inverse[map[v]]], &q = a.points[expected[v]];
+    sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  return sum / double(map.size()) / mean_edge(a);
+}
+
+// each vertex's mirror image (the vertex nearest to its point reflected in y = 0)
+std::vector<std::size_t> mirror_vertices(const Soup& a) {
+  std::vector<std::size_t> out(a.points.size());
+  for(std::size_t v = 0; v < a.points.size(); ++v) {
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t w = 0; w < a.points.size(); ++w) {
+      const auto &p = a.points[v], &q = a.points[w];
+      const double d = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] + q[1]) * (p[1] + q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+      if(d < best) { best = d; out[v] = w; }
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+TEMPLATE_LIST_TEST_CASE("isometric correspondence: a bilaterally symmetric shape comes back direct, or mirrored on request", "[isometric][orientation]",
+                        test::Mesh_types) {
+  const Soup a = animal(3);
+  const std::vector<std::size_t> perm = shuffled(a.points.size(), 3);
+  const Soup b = transformed(a, perm, moved);
+  const TestType source = mesh_of<TestType>(a), target = mesh_of<TestType>(b);
+  std::vector<std::size_t> identity(a.points.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  const std::vector<std::size_t> mirror = mirror_vertices(a);
+  // a direct map is ~0 edge lengths from the identity; the mirror map 4.7 away (measured: with ANY,
+  // seeds 0 to 4 return the mirror)
+  const bool all_seeds = std::is_same<TestType, test::Surface_mesh>::value;
+  for(unsigned seed = 0; seed < (all_seeds ? 6u : 1u); ++seed)
+    for(auto orientation : {shapecorr::Map_orientation::PRESERVING, shapecorr::Map_orientation::REVERSING}) {
+      const bool direct = orientation == shapecorr::Map_orientation::PRESERVING;
+      if(!all_seeds && !direct) continue;
+      shapecorr::Isometric_correspondence<TestType> method(source, target, SP::number_of_levels(1).number_of_eigenpairs(30).random_seed(seed).orientation(orientation));
+      const auto& report = method.run();
+      const double to_identity = mean_map_error(a, perm, method.dense_map(), identity), to_mirror = mean_map_error(a, perm, method.dense_map(), mirror);
+      INFO("seed " << seed << ", " << (direct ? "preserving" : "reversing") << ": " << to_identity << " edges from the identity, " << to_mirror
+                   << " from the mirror; orientation score " << report.orientation_score << ", coarse " << report.levels[0].orientation_score);
+      CHECK(report.requested_orientation == orientation);
+      CHECK(report.orientation == orientation);
+      CHECK(report.levels[0].orientation_met);
+      CHECK((direct ? report.orientation_score : -report.orientation_score) > 0.5);
+      CHECK((direct ? to_identity : to_mirror) < 1.0);
+      CHECK((direct ? to_mirror : to_identity) > 3.0);
+    }
+  // ANY: the thesis's method, whichever distorts least; the report still says which it is
+  shapecorr::Isometric_correspondence<TestType> any(source, target, SP::number_of_levels(1).number_of_eigenpairs(30).orientation(shapecorr::Map_orientation::ANY));
+  const auto& report = any.run();
+  const double to_identity = mean_map_error(a, perm, any.dense_map(), identity);
+  CHECK((report.orientation == shapecorr::Map_orientation::PRESERVING) == (to_identity < 1.0));
+}
+
+TEST_CASE("isometric correspondence: a scaled copy (x 1.5) matches as well as the unscaled one", "[isometric][orientation]") {
+  typedef test::Surface_mesh Mesh;
+  const Soup a = animal(3);
+  const std::vector<std::size_t> perm = shuffled(a.points.size(), 4);
+  std::vector<std::size_t> identity(a.points.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  const Mesh source = mesh_of<Mesh>(a);
+  double error[2];
+  for(int scaled = 0; scaled < 2; ++scaled) {
+    const double f = scaled ? 1.5 : 1.0;
+    const Mesh target = mesh_of<Mesh>(transformed(a, perm, [f](const std::array<double, 3>& p) { return moved({f * p[0], f * p[1], f * p[2]}); }));
+    shapecorr::Isometric_correspondence<Mesh> method(source, target, SP::number_of_levels(1).number_of_eigenpairs(30));
+    const auto& report = method.run();
+    error[scaled] = mean_map_error(a, perm, method.dense_map(), identity);
+    INFO("scale " << f << ": " << error[scaled] << " edge lengths from the identity; energy " << report.levels[0].energies.back());
+    CHECK(report.orientation == shapecorr::Map_orientation::PRESERVING);
+    CHECK(error[scaled] < 1.0);
+  }
+  CHECK(error[1] <= 1.25 * error[0] + 0.05);
+}
+
+TEMPLATE_LIST_TEST_CASE("isometric correspondence: keep_largest_component works on the largest component and maps the others' vertices",
+                        "[isometric][orientation]", test::Mesh_types) {
+  // the animal with a small sphere beside it (a second component), onto the moved, renumbered animal
+  const Soup a = animal(3);
+  const std::vector<std::size_t> perm = shuffled(a.points.size(), 6);
+  const Soup b = transformed(a, perm, moved);
+  Soup with_ball = a;
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> ball;
+  shapecorr::make_icosphere(ball, 1, 0.2);
+  const Soup s = soup_of(ball);
+  const std::size_t n = a.points.size();
+  for(const auto& p : s.points) with_ball.points.push_back({p[0] + 6, p[1], p[2]});
+  for(const auto& t : s.triangles) with_ball.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  const TestType source = mesh_of<TestType>(with_ball), target = mesh_of<TestType>(b);
+  CHECK_THROWS_AS(shapecorr::Isometric_correspondence<TestType>(source, target), shapecorr::Invalid_input);
+  shapecorr::Isometric_correspondence<TestType> method(source, target, SP::number_of_levels(1).number_of_eigenpairs(30).keep_largest_component(true));
+  const auto& report = method.run();
+  CHECK(report.source_vertices_dropped == s.points.size());
+  CHECK(report.target_vertices_dropped == 0);
+  const std::vector<std::size_t>& map = method.dense_map();
+  REQUIRE(map.size() == with_ball.points.size());
+  // the animal's vertices: the direct map (in the user's numbering); the ball's: a vertex of the target
+  std::vector<std::size_t> identity(n);
+  std::iota(identity.begin(), identity.end(), 0);
+  CHECK(mean_map_error(a, perm, std::vector<std::size_t>(map.begin(), map.begin() + long(n)), identity) < 1.0);
+  for(std::size_t v = n; v < map.size(); ++v) CHECK(map[v] < b.points.size());
+  for(const auto& m : report.matches) CHECK(m.source < n);
+  CHECK(report.orientation == shapecorr::Map_orientation::PRESERVING);
+}
+
+TEST_CASE("isometric correspondence: the same shape at two resolutions (2562 and 642 vertices), both ways", "[isometric][orientation]") {
+  // vertex i of the coarse animal is vertex i of the fine one (make_icosphere keeps the ids of
+  // the level before): the truth for the first 642 vertices
+  typedef test::Surface_mesh Mesh;
+  const Soup fine = animal(4), coarse = animal(3);
+  const std::vector<std::size_t> perm = shuffled(coarse.points.size(), 8);
+  const Soup coarse_moved = transformed(coarse, perm, moved);
+  const Mesh F = mesh_of<Mesh>(fine), C = mesh_of<Mesh>(coarse_moved);
+  const double edge = mean_edge(coarse);
+  std::vector<std::size_t> inverse(perm.size());
+  for(std::size_t i = 0; i < perm.size(); ++i) inverse[perm[i]] = i;
+  auto distance = [](const std::array<double, 3>& p, const std::array<double, 3>& q) {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  };
+  { // fine -> coarse: the first 642 source vertices should go to their own (renumbered) vertex
+    shapecorr::Isometric_correspondence<Mesh> method(F, C, SP::number_of_levels(2).number_of_eigenpairs(30));
+    const auto& report = method.run();
+    double sum = 0;
+    for(std::size_t v = 0; v < coarse.points.size(); ++v) sum += distance(coarse.points[inverse[method.dense_map()[v]]], coarse.points[v]);
+    INFO("fine -> coarse: " << sum / double(coarse.points.size()) / edge << " coarse edge lengths; orientation " << report.orientation_score);
+    CHECK(report.orientation == shapecorr::Map_orientation::PRESERVING);
+    CHECK(sum / double(coarse.points.size()) / edge < 1.0);
+  }
+  { // coarse -> fine: coarse vertex perm[i] should go to fine vertex i
+    shapecorr::Isometric_correspondence<Mesh> method(C, F, SP::number_of_levels(2).number_of_eigenpairs(30));
+    const auto& report = method.run();
+    double sum = 0;
+    for(std::size_t i = 0; i < coarse.points.size(); ++i) sum += distance(fine.points[method.dense_map()[perm[i]]], fine.points[i]);
+    INFO("coarse -> fine: " << sum / double(coarse.points.size()) / edge << " coarse edge lengths; orientation " << report.orientation_score);
+    CHECK(report.orientation == shapecorr::Map_orientation::PRESERVING);
+    CHECK(sum / double(coarse.points.size()) / edge < 1.0);
+  }
+}

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 namespace shapecorr {
@@ -123,6 +124,43 @@ void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0, 
       x = base + Eigen::AngleAxisd(ramp * bend_degrees * M_PI / 180, across) * (x - base);
     }
     p = {x.x(), x.y(), x.z()};
+  }
+  internal::soup_to_mesh(P, T, tm);
+}
+
+/// \ingroup PkgShapeCorrMesh
+/// A bilaterally symmetric "animal": the unit icosphere of `subdivisions` (the vertices of
+/// `make_icosphere`, so the animal of level s + 1 is a finer triangulation of that of level s
+/// with the same first vertices) with a head, a long tail and four legs in mirror pairs, longer
+/// than the body, like TOSCA's animals. The geometry is symmetric in the plane y = 0 (the
+/// triangulation need not be): its mirror image is an isometry that reverses the orientation, so
+/// geodesic distances alone cannot tell the direct map from the mirrored one; the test shape of
+/// `Map_orientation`. The shape is multiplied by `scale`. With `turn_seed` ≠ 0 the icosphere is
+/// first turned by a rotation drawn from the seed: the same surface, another triangulation.
+/// \throws Invalid_argument when `scale` is not positive and finite
+template <typename TriangleMesh>
+void make_animal(TriangleMesh& tm, int subdivisions, double scale = 1, unsigned turn_seed = 0) {
+  if(!(scale > 0 && std::isfinite(scale))) throw Invalid_argument("make_animal: scale must be positive");
+  std::vector<std::array<double, 3>> P;
+  std::vector<std::array<std::size_t, 3>> T;
+  internal::icosphere_soup(subdivisions, P, T);
+  if(turn_seed != 0) { // a rotation from four numbers of the seed's generator (its output is the same everywhere)
+    std::mt19937 random(turn_seed);
+    double q[4];
+    for(double& x : q) x = double(random()) / double(std::mt19937::max()) - 0.5;
+    const Eigen::Matrix3d turn = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+    for(auto& p : P) {
+      const Eigen::Vector3d x = turn * Eigen::Vector3d(p[0], p[1], p[2]);
+      p = {x.x(), x.y(), x.z()};
+    }
+  }
+  // direction (need not be unit) and length: head, tail, front legs, hind legs
+  const double limbs[6][4] = {{1, 0, 0.5, 1.6}, {-1, 0, 0.3, 2.6}, {0.6, 0.7, -1, 2.0}, {0.6, -0.7, -1, 2.0}, {-0.6, 0.7, -1, 2.2}, {-0.6, -0.7, -1, 2.2}};
+  for(auto& p : P) {
+    const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]).normalized();
+    double r = 1;
+    for(const auto& l : limbs) r += l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+    p = {scale * r * d.x(), scale * r * d.y(), scale * r * d.z()};
   }
   internal::soup_to_mesh(P, T, tm);
 }

@@ -68,7 +68,13 @@ struct Feature_matching {
   double objective = 0;            ///< its objective
   bool optimal = false;            ///< proven optimal (false: the solver stopped at its work bound with the best found)
   std::size_t nodes = 0;           ///< search nodes visited (branch and bound; 0 for other solvers)
+  bool accepted = true;            ///< the matching satisfies the caller's acceptance test (false: none found that does; this is the best rejected one)
 };
+
+/// \ingroup PkgShapeCorrRegistration
+/// A test a complete matching must pass to be a solution (e.g. an orientation test); empty: every
+/// matching passes.
+typedef std::function<bool(const std::vector<Feature_pair>&)> Matching_acceptance;
 
 namespace internal {
 
@@ -130,12 +136,16 @@ inline bool is_feasible(const Coarse_matching_problem& p) {
 /// solution found. Needs no external solver.
 /// \param max_nodes bound on the work: when reached the best matching found so far is returned
 ///   with `optimal = false`
+/// \param accept when not empty, only complete matchings it accepts are solutions: the result is
+///   the best accepted matching (optimal among them when `optimal`); when none is accepted within
+///   the work bound, the best rejected one with `accepted = false`
 /// \throws Invalid_argument for a malformed or infeasible problem (see `is_feasible`)
 /// \code
 ///   shapecorr::Feature_matching best = shapecorr::solve_coarse_matching_branch_and_bound(problem);
 /// \endcode
 inline Feature_matching solve_coarse_matching_branch_and_bound(const Coarse_matching_problem& p,
-                                                               std::size_t max_nodes = 50'000'000) {
+                                                               std::size_t max_nodes = 50'000'000,
+                                                               const Matching_acceptance& accept = {}) {
   const char* who = "coarse matching (branch and bound)";
   internal::check_problem(p, who);
   if(!is_feasible(p)) internal::throw_infeasible(p, who);
@@ -158,8 +168,16 @@ inline Feature_matching solve_coarse_matching_branch_and_bound(const Coarse_matc
     }
   Eigen::VectorXd added = Eigen::VectorXd::Zero(C); // distortion of each candidate against the chosen pairs
   std::vector<char> target_used(m, 0);
-  std::vector<std::size_t> chosen, best_chosen;
-  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> chosen, best_chosen, rejected_chosen;
+  double best = std::numeric_limits<double>::infinity(), best_rejected = best;
+  std::vector<Feature_pair> leaf;
+  auto accepted = [&] {
+    if(!accept) return true;
+    leaf.clear();
+    for(std::size_t c : chosen) leaf.push_back(p.candidates[c]);
+    std::sort(leaf.begin(), leaf.end());
+    return accept(leaf);
+  };
   std::size_t nodes = 0;
   bool stopped = false;
   std::vector<double> minima;
@@ -183,7 +201,10 @@ inline Feature_matching solve_coarse_matching_branch_and_bound(const Coarse_matc
     if(++nodes > max_nodes) { stopped = true; return; }
     const std::size_t r = need - chosen.size();
     if(r == 0) {
-      if(cost < best) { best = cost; best_chosen = chosen; }
+      if(cost < best) {
+        if(accepted()) { best = cost; best_chosen = chosen; }
+        else if(cost < best_rejected) { best_rejected = cost; rejected_chosen = chosen; }
+      }
       return;
     }
     if(F - pos < r || cost + bound(pos, r) >= best) return;
@@ -210,6 +231,10 @@ inline Feature_matching solve_coarse_matching_branch_and_bound(const Coarse_matc
   };
   search(0, 0.0);
   Feature_matching result;
+  if(best_chosen.empty() && !rejected_chosen.empty()) {
+    best_chosen = rejected_chosen;
+    result.accepted = false;
+  }
   for(std::size_t c : best_chosen) result.pairs.push_back(p.candidates[c]);
   std::sort(result.pairs.begin(), result.pairs.end());
   result.objective = p.objective(result.pairs); // recomputed: no drift from the incremental sums
@@ -228,13 +253,16 @@ inline Feature_matching solve_coarse_matching_branch_and_bound(const Coarse_matc
 /// \tparam MipTraits e.g. `CGAL::GLPK_mixed_integer_program_traits<double>` (Debian's
 ///   libglpk-dev) or `CGAL::SCIP_mixed_integer_program_traits<double>`
 /// \param solver a fresh traits object (the program is built in it)
+/// \param excluded matchings that are not solutions (each gets the cut `Σ_{c in it} m(c) ≤ |it| − 1`),
+///   e.g. the previous answers of a caller that rejected them
 /// The program has |C| binaries and up to |C|²/2 continuous variables and constraints; the work
 /// of the solver is bounded by what the traits offer (CGAL's GLPK traits have no time limit, so
 /// keep the candidates few: the branch and bound is the scalable choice).
 /// \throws Invalid_argument for a malformed or infeasible problem; Solver_failure with the
 ///   solver's message when it fails
 template <typename MipTraits>
-Feature_matching solve_coarse_matching_mip(const Coarse_matching_problem& p, MipTraits& solver) {
+Feature_matching solve_coarse_matching_mip(const Coarse_matching_problem& p, MipTraits& solver,
+                                           const std::vector<std::vector<Feature_pair>>& excluded = {}) {
   const char* who = "coarse matching (mixed-integer program)";
   internal::check_problem(p, who);
   if(!is_feasible(p)) internal::throw_infeasible(p, who);
@@ -254,6 +282,11 @@ Feature_matching solve_coarse_matching_mip(const Coarse_matching_problem& p, Mip
     per_source[f.source]->add_coefficient(x[c], 1);
     per_target[f.target]->add_coefficient(x[c], 1);
     cardinality->add_coefficient(x[c], 1);
+  }
+  for(const std::vector<Feature_pair>& cut : excluded) {
+    Linear_constraint* no_good = solver.create_constraint(-MipTraits::Variable::infinity(), double(cut.size()) - 1);
+    for(std::size_t c = 0; c < C; ++c)
+      if(std::find(cut.begin(), cut.end(), p.candidates[c]) != cut.end()) no_good->add_coefficient(x[c], 1);
   }
   Linear_objective* objective = solver.create_objective(Linear_objective::MINIMIZE);
   for(std::size_t a = 0; a < C; ++a)
