@@ -244,7 +244,7 @@ void run_case(const Case& c, const Options& o) {
         for(auto& m : snapshot) m = {src.shape.original[m.source], tgt.shape.original[m.target], m.level};
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     j["methods"]["ours-" + trim]["components"] = {src.components, tgt.components};
-    const json orientation = {{"score", report.orientation_score}, {"dense", report.dense_orientation},
+    const json orientation = {{"score", report.orientation_score},
                               {"met", report.levels.empty() ? false : report.levels[0].orientation_met}};
     dense_errors(dense, r);
     // sparse matches and the snapshots of local optimization: one list of (truth, found) pairs
@@ -305,7 +305,7 @@ void run_case(const Case& c, const Options& o) {
     const auto& d = j["methods"]["ours-" + trim];
     std::cerr << c.name << " ours-" << trim << ": dense mean " << d["dense_direct"]["mean"].get<double>() << " direct, "
               << d["dense_symmetric"]["mean"].get<double>() << " symmetric (" << 100 * d["dense_symmetric"]["within_0.25"].get<double>()
-              << " % < 0.25), " << r.seconds << " s, orientation " << report.orientation_score << " (dense " << report.dense_orientation << ")\n";
+              << " % < 0.25), " << r.seconds << " s, orientation " << report.orientation_score << "\n";
   }
   // pyFM, as a separate process on the same files: without and with its orientation term
   for(const std::string& variant : pyfm_runs) {

@@ -36,6 +36,15 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& P, const std::vector
 } // namespace internal
 
 namespace internal {
+// The radius in unit direction d of the unit sphere with protrusions ("limbs": a direction, not
+// necessarily unit, and a length times `scale`): 1 + Σ scale·length·exp(−(1 − d·u) / 0.08).
+template <std::size_t N>
+double limbed_radius(const Eigen::Vector3d& d, const double (&limbs)[N][4], double scale) {
+  double r = 1;
+  for(const auto& l : limbs) r += scale * l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+  return r;
+}
+
 // The unit icosphere's points and triangles (see make_icosphere).
 inline void icosphere_soup(int subdivisions, std::vector<std::array<double, 3>>& P, std::vector<std::array<std::size_t, 3>>& T) {
   if(subdivisions < 0 || subdivisions > 8) throw Invalid_argument("make_icosphere: subdivisions in [0, 8]");
@@ -115,8 +124,7 @@ void make_creature(TriangleMesh& tm, int subdivisions, double bend_degrees = 0, 
   const Eigen::Vector3d across = along.cross(Eigen::Vector3d::UnitZ()).normalized();
   for(auto& p : P) {
     const Eigen::Vector3d d(p[0], p[1], p[2]);
-    double r = 1;
-    for(const auto& l : limbs) r += limb_scale * l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+    const double r = internal::limbed_radius(d, limbs, limb_scale);
     Eigen::Vector3d x = r * d;
     const double t = std::clamp((x.dot(along) - 0.9) / 0.6, 0.0, 1.0), ramp = t * t * (3 - 2 * t);
     if(ramp > 0) {
@@ -158,8 +166,7 @@ void make_animal(TriangleMesh& tm, int subdivisions, double scale = 1, unsigned 
   const double limbs[6][4] = {{1, 0, 0.5, 1.6}, {-1, 0, 0.3, 2.6}, {0.6, 0.7, -1, 2.0}, {0.6, -0.7, -1, 2.0}, {-0.6, 0.7, -1, 2.2}, {-0.6, -0.7, -1, 2.2}};
   for(auto& p : P) {
     const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]).normalized();
-    double r = 1;
-    for(const auto& l : limbs) r += l[3] * std::exp(-(1 - d.dot(Eigen::Vector3d(l[0], l[1], l[2]).normalized())) / 0.08);
+    const double r = internal::limbed_radius(d, limbs, 1.0);
     p = {scale * r * d.x(), scale * r * d.y(), scale * r * d.z()};
   }
   internal::soup_to_mesh(P, T, tm);

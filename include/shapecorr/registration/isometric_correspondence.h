@@ -116,12 +116,10 @@ struct Isometric_correspondence_report {
   /// whose corners go to three distinct target vertices, the area-weighted mean of the sign of
   /// (image triangle's normal) · (the target's normals at its corners): +1 every triangle keeps
   /// its turning sense, −1 every one is flipped (a mirror), near 0 undecided (a map that folds).
-  /// After `compute_dense_map()` this is the dense map's (`dense_orientation`); before, the
-  /// coarse matches' triple orientation score (see the class description).
+  /// After `compute_dense_map()` this is the dense map's, over every source triangle; before,
+  /// the coarse matches' triple orientation score (see the class description).
   /// Measured on TOSCA pairs: 0.5 to 0.8 for right maps, −0.4 to −0.8 for mirrored ones.
   double orientation_score = 0;
-  /// The dense map's orientation agreement (after `compute_dense_map()`), over every source triangle.
-  double dense_orientation = 0;
   /// With `keep_largest_component`: the source vertices off its largest component (each mapped
   /// as the nearest vertex on it).
   std::size_t source_vertices_dropped = 0;
@@ -391,15 +389,12 @@ public:
     Timer t;
     Feature_matching r;
     std::size_t tests = 0;
-    auto score = [&](const std::vector<Feature_pair>& pairs) {
-      std::vector<Match> m;
-      for(const Feature_pair& p : pairs) m.push_back({p.source, p.target, 0});
+    auto wanted = [&](const std::vector<Feature_pair>& pairs) {
       ++tests;
-      return triple_score(m);
+      return has_orientation(triple_score(pairs), orientation_margin);
     };
-    auto wanted = [&](double sc) { return has_orientation(sc, orientation_margin); };
     Matching_acceptance accept;
-    if(m_orientation != Map_orientation::ANY) accept = [&](const std::vector<Feature_pair>& pairs) { return wanted(score(pairs)); };
+    if(m_orientation != Map_orientation::ANY) accept = wanted;
     if(m_solver == Coarse_solver::BRANCH_AND_BOUND) {
       r = solve_coarse_matching_branch_and_bound(m_problem, m_max_nodes, accept);
     } else { // the rejected answers cut off, a bounded number of times
@@ -413,7 +408,7 @@ public:
           if(excluded.empty()) throw;
           break; // no other matching: keep the first one
         }
-        a.accepted = wanted(score(a.pairs));
+        a.accepted = wanted(a.pairs);
         if(excluded.empty() || a.accepted) r = a; // the unconstrained optimum stays when nothing is accepted
         if(a.accepted) break;
         excluded.push_back(a.pairs);
@@ -426,7 +421,7 @@ public:
     rec.objective = r.objective;
     rec.optimal = r.optimal;
     rec.nodes = r.nodes;
-    rec.orientation_score = score(r.pairs);
+    rec.orientation_score = triple_score(r.pairs);
     rec.orientation_met = r.accepted;
     rec.orientation_tests = tests;
     rec.matching_seconds += t.seconds();
@@ -447,6 +442,10 @@ public:
         rec.energies.push_back(energy());
         rec.snapshots.push_back(vertex_matches());
       }
+    if(m_report.levels.size() == 1) { // the coarse features moved: their orientation tables again
+      m_source.make_triples();
+      m_target.make_triples();
+    }
     rec.local_seconds += t.seconds();
     publish();
   }
@@ -516,11 +515,7 @@ public:
         if(k == kmax) break;
       }
     }
-    const internal::Triangle_arrays& sa = m_source.engine.arrays();
-    std::vector<Eigen::Index> all(std::size_t(sa.F.rows()));
-    for(Eigen::Index f = 0; f < sa.F.rows(); ++f) all[std::size_t(f)] = f;
-    m_report.dense_orientation = internal::orientation_agreement(sa, m_target.engine.arrays(), m_target.normals, all, m_dense);
-    set_orientation(m_report.dense_orientation);
+    set_orientation(internal::orientation_agreement(m_source.engine.arrays(), m_target.engine.arrays(), m_target.normals, m_dense));
     m_dense_user.resize(m_source.user_size());
     for(std::size_t v = 0; v < m_dense_user.size(); ++v) m_dense_user[v] = m_target.to_user(m_dense[m_source.from_user(v)]);
     m_report.source_vertices_dropped = m_source.dropped;
@@ -857,10 +852,10 @@ private:
   void publish() {
     m_report.matches = vertex_matches();
     m_report.requested_orientation = m_orientation;
-    if(m_report.levels.size() == 1) { // the coarse level (features moved: new tables); the dense map sets its own
-      m_source.make_triples();
-      m_target.make_triples();
-      set_orientation(triple_score(m_matches));
+    if(m_report.levels.size() == 1) { // the coarse level; the dense map sets its own
+      std::vector<Feature_pair> pairs;
+      for(const Match& m : m_matches) pairs.push_back({m.source, m.target});
+      set_orientation(triple_score(pairs));
     }
   }
   // the agreement a coarse matching needs (a weak one was seen to end mirrored after local optimization)
@@ -873,11 +868,12 @@ private:
     m_report.orientation = score > 0 ? Map_orientation::PRESERVING : Map_orientation::REVERSING;
   }
 
-  // The triple orientation score (internal::triple_orientation_score) of `matches`, with the
-  // tables of the current features (made by trim(), again after local optimization moved them).
-  double triple_score(const std::vector<Match>& matches) const {
+  // The triple orientation score (internal::triple_orientation_score) of pairs of feature
+  // positions, with the tables of the current features (made by trim(), again after local
+  // optimization moved them).
+  double triple_score(const std::vector<Feature_pair>& pairs) const {
     std::vector<std::size_t> s, t;
-    for(const Match& m : matches) { s.push_back(m.source); t.push_back(m.target); }
+    for(const Feature_pair& p : pairs) { s.push_back(p.source); t.push_back(p.target); }
     return internal::triple_orientation_score(m_source.triples, m_source.features.size(), m_target.triples, m_target.features.size(), s, t);
   }
 

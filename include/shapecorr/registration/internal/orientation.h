@@ -119,16 +119,15 @@ inline double triple_orientation_score(const std::vector<double>& Os, std::size_
   return weight > 0 ? sum / weight : 0.0;
 }
 
-// The orientation agreement of a vertex map on the source faces `faces` (indices into s.F; `map`
-// must be set at their corners): over the faces whose corners go to three distinct target
-// vertices, the source-area-weighted mean of the sign of (image triangle's normal) · (sum of the
+// The orientation agreement of a vertex map (`map[v]`: the target vertex of source vertex v):
+// over the source faces whose corners go to three distinct target vertices, the source-area-weighted mean of the sign of (image triangle's normal) · (sum of the
 // target's normals at its corners), in [-1, 1]; +1 orientation-preserving, -1 a mirror; 0 when
 // no face counts.
 inline double orientation_agreement(const Triangle_arrays& s, const Triangle_arrays& t,
                                     const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& target_normals,
-                                    const std::vector<Eigen::Index>& faces, const std::vector<std::size_t>& map) {
+                                    const std::vector<std::size_t>& map) {
   double sum = 0, weight = 0;
-  for(Eigen::Index f : faces) {
+  for(Eigen::Index f = 0; f < s.F.rows(); ++f) {
     const std::size_t U = map[std::size_t(s.F(f, 0))], V = map[std::size_t(s.F(f, 1))], W = map[std::size_t(s.F(f, 2))];
     if(U == V || V == W || U == W) continue;
     const Eigen::Vector3d pu = t.V.row(long(U)), pv = t.V.row(long(V)), pw = t.V.row(long(W));
